@@ -1,0 +1,27 @@
+// Parameters t_i for samples q_i: chordal, centripetal, uniform.
+#pragma once
+#include <string>
+#include "fairsplines/types.hpp"
+
+namespace fairsplines {
+
+enum class Parametrization { Chordal, Centripetal, Uniform };
+
+/// Parses "chordal", "centripetal" or "uniform"; throws InputError otherwise.
+Parametrization parseParametrization(const std::string& name);
+
+/// Checks samples for the spline constructions: at least `minPoints` rows, 2 or 3
+/// columns, finite values, not all coincident, no two consecutive (cyclically
+/// consecutive when `closed`) coincident. Throws InputError naming the problem.
+void validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method);
+
+/// Parameters for the samples: t_0 = 0 and t_{i+1} - t_i = |q_{i+1} - q_i|^a with
+/// a = 1 (chordal), 1/2 (centripetal) or 0 (uniform). For closed data one more
+/// value t_n closes the loop back to q_0 (size n+1), else size n.
+Eigen::VectorXd parameters(const PointMatrix& q, Parametrization kind, bool closed);
+
+/// Checks user-given parameters: n values (n + 1 when closed), finite, strictly
+/// increasing. Returns them; throws InputError naming the first bad one.
+Eigen::VectorXd validatedParameters(const Eigen::VectorXd& t, Eigen::Index n, bool closed);
+
+}  // namespace fairsplines

@@ -1,0 +1,58 @@
+#include "fairsplines/baselines.hpp"
+
+#include <GeomAPI_Interpolate.hxx>
+#include <Standard_Failure.hxx>
+#include <TColStd_HArray1OfReal.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
+
+#include "fairsplines/bspline.hpp"
+#include "fairsplines/csr_detail.hpp"
+#include "fairsplines/errors.hpp"
+
+namespace fairsplines {
+
+Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametrization parametrization, bool closed) {
+  validateSamples(q, closed, closed ? 3 : 2, "classic interpolation");
+  const Eigen::VectorXd t = parameters(q, parametrization, closed);
+  const int n = static_cast<int>(q.rows());
+  Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, n);
+  Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, closed ? n + 1 : n);
+  for (int i = 0; i < n; ++i) {
+    points->SetValue(i + 1, gp_Pnt(q(i, 0), q(i, 1), q.cols() > 2 ? q(i, 2) : 0.0));
+  }
+  for (int i = 0; i < params->Length(); ++i) params->SetValue(i + 1, t[i]);
+  try {
+    GeomAPI_Interpolate interpolate(points, params, closed, 0.0);
+    interpolate.Perform();
+    if (!interpolate.IsDone()) throw InputError("classic interpolation failed (GeomAPI_Interpolate)");
+    return interpolate.Curve();
+  } catch (const Standard_Failure& failure) {
+    throw InputError(std::string("classic interpolation failed: ") + failure.GetMessageString());
+  }
+}
+
+BSplineCurve quasiInterpolant(const PointMatrix& q, Parametrization parametrization, bool closed) {
+  validateSamples(q, closed, 3, "the quasi-interpolant");
+  const Eigen::VectorXd t = parameters(q, parametrization, closed);
+  return detail::fitCubic(q, t, closed, 1e-9, EpsilonRule::CaseDistinction, true);
+}
+
+BSplineCurve controlPointSpline(const PointMatrix& q, bool closed) {
+  validateSamples(q, closed, closed ? 3 : 4, "the control-point spline");
+  const Eigen::Index n = q.rows();
+  if (closed) {
+    Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(n + 1, 0.0, static_cast<double>(n));
+    return periodicCubic(q, t);
+  }
+  // Clamped, uniform: n poles, n - 2 distinct knots.
+  Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(n - 2, 0.0, static_cast<double>(n - 3));
+  BSplineCurve curve;
+  curve.degree = 3;
+  curve.poles = q;
+  curve.knots = t;
+  curve.mults = Eigen::VectorXi::Ones(n - 2);
+  curve.mults[0] = curve.mults[n - 3] = 4;
+  return curve;
+}
+
+}  // namespace fairsplines

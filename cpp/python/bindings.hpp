@@ -1,0 +1,6 @@
+#pragma once
+#include <pybind11/pybind11.h>
+
+namespace fairsplines::python {
+void bindCurves(pybind11::module_& m);
+}
