@@ -1,0 +1,46 @@
+# FairSplines: the two commands are `make demo` and `make test` (see README.md).
+PYTHON   ?= /usr/bin/python3
+BUILD    ?= build
+OUT      ?= out
+MOD_DIR  ?= $(HOME)/.local/share/FreeCAD/Mod
+JOBS     ?= 2
+XVFB     := xvfb-run -a -s "-screen 0 1280x1024x24"
+export QTWEBENGINE_DISABLE_SANDBOX=1
+
+.PHONY: deps build install demo test test-cpp test-python run bench clean
+
+deps:
+	@bash tools/install-deps.sh
+
+build: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=$(PYTHON) >/dev/null
+	cmake --build $(BUILD) -j $(JOBS)
+
+# The add-on is the repository itself, linked into FreeCAD's user Mod folder.
+install: build
+	mkdir -p $(MOD_DIR)
+	ln -sfn $(CURDIR) $(MOD_DIR)/FairSplines
+
+demo: install
+	mkdir -p $(OUT)/demo
+	FAIRSPLINES_OUT=$(CURDIR)/$(OUT)/demo freecadcmd demo/demo.py
+	@echo "demo: wrote $(OUT)/demo/"
+
+test-cpp: build
+	cd $(BUILD) && ctest --output-on-failure
+
+test-python: install
+	mkdir -p $(OUT)/test-artifacts
+	$(XVFB) $(PYTHON) -m pytest -v tests
+
+test: test-cpp test-python
+
+run: install
+	freecad
+
+bench: build
+	$(BUILD)/bench/bench_csr
+	$(PYTHON) bench/bench_handover.py
+
+clean:
+	rm -rf $(BUILD) $(OUT) freecad_workbench/_kernel*.so

@@ -1,0 +1,43 @@
+"""FairSplines: fair curves and surfaces for FreeCAD.
+
+The macro API. Everything here works headless (``freecadcmd`` or plain
+``/usr/bin/python3``); nothing imports the GUI.
+
+    import freecad_workbench as fw
+    curve = fw.csr_spline(points)            # Part.BSplineCurve, cubic, C2
+    fw.curvature_sign_changes(curve)         # 0 for convex data
+"""
+from ._freecad import ensure_freecad_path as _ensure_freecad_path
+
+_ensure_freecad_path()
+
+from .errors import InputError  # noqa: E402
+from .curves import (  # noqa: E402
+    csr_spline,
+    interpolate_classic,
+    quasi_interpolant,
+    control_point_spline,
+    quadratic_design,
+)
+from .analysis import (  # noqa: E402
+    CurvatureProfile,
+    curvature_profile,
+    curvature_sign_changes,
+    curvature_extrema,
+    max_distance,
+)
+
+__all__ = [
+    "InputError",
+    "csr_spline",
+    "interpolate_classic",
+    "quasi_interpolant",
+    "control_point_spline",
+    "quadratic_design",
+    "CurvatureProfile",
+    "curvature_profile",
+    "curvature_sign_changes",
+    "curvature_extrema",
+    "max_distance",
+]
+__version__ = "0.1.0"

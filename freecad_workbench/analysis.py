@@ -1,0 +1,34 @@
+"""Curve analysis for every capability: curvature along a curve, its sign changes and
+extrema, and the distance from data to a curve. Accepts Part edges and curves."""
+from collections import namedtuple
+
+from . import _kernel
+from .kernel import as_points, from_part
+
+CurvatureProfile = namedtuple("CurvatureProfile", "u s kappa signed normal")
+CurvatureProfile.__doc__ = (
+    "Samples along a curve: parameters u, arc length s, curvature kappa (signed for planar curves, "
+    "positive turning counter-clockwise about `normal`), `signed` flag and the plane normal."
+)
+CurvatureExtremum = namedtuple("CurvatureExtremum", "u s kappa maximum")
+
+
+def curvature_profile(curve, n=512):
+    """Curvature at about n samples (at least 8 per knot span) -> CurvatureProfile."""
+    u, s, kappa, signed, normal = _kernel.curvature_profile(from_part(curve), int(n))
+    return CurvatureProfile(u, s, kappa, bool(signed), tuple(normal))
+
+
+def curvature_sign_changes(curve, samples_per_span=32):
+    """Number of sign changes of the curvature of a planar curve (0 for a non-planar one)."""
+    return _kernel.curvature_sign_changes(from_part(curve), int(samples_per_span))
+
+
+def curvature_extrema(curve, n=2048):
+    """Interior local extrema of the (signed) curvature: [CurvatureExtremum(u, s, kappa, maximum)]."""
+    return [CurvatureExtremum(*e) for e in _kernel.curvature_extrema(from_part(curve), int(n))]
+
+
+def max_distance(curve, points):
+    """Largest distance from the points to the curve."""
+    return _kernel.max_distance(from_part(curve), as_points(points))

@@ -1,0 +1,64 @@
+"""Curve constructions of the csr paper (Karčiauskas & Peters, "Curvature-sensitive
+splines and design with basic curves") and the baselines they are compared with.
+Every function returns a FreeCAD ``Part.BSplineCurve``."""
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+from .kernel import as_points, to_part
+
+PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
+EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
+
+
+def _check_parametrization(parametrization):
+    if parametrization not in PARAMETRIZATIONS:
+        raise InputError(f"unknown parametrization {parametrization!r}: use one of {', '.join(PARAMETRIZATIONS)}")
+
+
+def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, epsilon_rule="case", parameters=None):
+    """Curvature-sensitive relaxed spline (Section 4, eq. (6)) through sampled data.
+
+    A cubic C2 B-spline with a knot per sample. It stays close to the samples without
+    interpolating them, and does not oscillate where the data's curvature changes
+    sharply. Open data: the end points are interpolated. Closed data: periodic curve.
+
+    points: FreeCAD Vectors, tuples, or an (N,2)/(N,3) array; N >= 3.
+    parametrization: "chordal" (default), "centripetal" or "uniform".
+    epsilon: tolerance of eq. (6), relative to 1/size of the data.
+    epsilon_rule: "case" (mu, nu := 1/2 below epsilon, the paper's main form) or
+        "additive" (epsilon added to every curvature).
+    parameters: optional explicit parameters (N values, N+1 when closed).
+    Raises InputError on bad input.
+    """
+    _check_parametrization(parametrization)
+    if epsilon_rule not in EPSILON_RULES:
+        raise InputError(f"unknown epsilon_rule {epsilon_rule!r}: use 'case' or 'additive'")
+    q = as_points(points)
+    t = np.zeros(0) if parameters is None else np.asarray(parameters, dtype=float)
+    return to_part(_kernel.csr_spline(q, bool(closed), parametrization, float(epsilon), EPSILON_RULES[epsilon_rule], t))
+
+
+def interpolate_classic(points, closed=False, parametrization="chordal"):
+    """Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate), the baseline."""
+    _check_parametrization(parametrization)
+    return to_part(_kernel.classic_interpolation(as_points(points), bool(closed), parametrization))
+
+
+def quasi_interpolant(points, closed=False, parametrization="chordal"):
+    """The cubic quasi-interpolant, (-1, 8, -1)/6 for uniform parameters (Fig. 2e)."""
+    _check_parametrization(parametrization)
+    return to_part(_kernel.quasi_interpolant(as_points(points), bool(closed), parametrization))
+
+
+def control_point_spline(points, closed=False):
+    """The cubic B-spline that uses the data as control points (Fig. 2f, red)."""
+    return to_part(_kernel.control_point_spline(as_points(points), bool(closed)))
+
+
+def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e-9):
+    """Quadratic design (Section 7, eq. (12)): sparse points to quadratic Bézier pieces
+    {q_i, m_i, q_(i+1)} whose handles m_i are the poles between the data points.
+    Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
+    _check_parametrization(parametrization)
+    return to_part(_kernel.quadratic_design(as_points(points), bool(closed), parametrization, float(epsilon)))

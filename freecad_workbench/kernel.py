@@ -1,0 +1,93 @@
+"""The only module that talks to the compiled kernel: arrays in, Part geometry out."""
+import math
+
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+
+
+def as_points(points, name="points"):
+    """Coerce FreeCAD Vectors, Part Vertexes, tuples or an (N,2)/(N,3) array to a
+    C-contiguous float64 array of shape (N, 2) or (N, 3)."""
+    if isinstance(points, np.ndarray):
+        array = points
+    else:
+        rows = []
+        for i, p in enumerate(points):
+            if hasattr(p, "Point"):  # Part.Vertex
+                p = p.Point
+            if hasattr(p, "x") and hasattr(p, "y") and hasattr(p, "z"):  # FreeCAD.Vector
+                rows.append((p.x, p.y, p.z))
+            else:
+                try:
+                    rows.append(tuple(float(c) for c in p))
+                except (TypeError, ValueError):
+                    raise InputError(f"{name}[{i}] is not a point: {p!r}") from None
+        if rows and len({len(r) for r in rows}) != 1:
+            raise InputError(f"{name} mix 2D and 3D points")
+        array = np.array(rows, dtype=float) if rows else np.zeros((0, 3))
+    try:
+        array = np.ascontiguousarray(array, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be numbers") from None
+    if array.ndim != 2 or array.shape[1] not in (2, 3):
+        raise InputError(f"{name} must have shape (N, 2) or (N, 3), got {array.shape}")
+    return array
+
+
+def to_part(curve):
+    """Exact hand-over of a kernel BSplineCurve to a FreeCAD Part.BSplineCurve.
+
+    The arrays go straight into buildFromPolesMultsKnots, which reads numpy arrays
+    (no per-pole Python objects); bit-for-bit exact."""
+    import Part
+
+    poles = curve.poles
+    if poles.shape[1] == 2:
+        poles = np.c_[poles, np.zeros(len(poles))]
+    # FreeCAD reads integer arrays as 64-bit: an int32 array crashes it.
+    mults = curve.mults.astype(np.int64)
+    result = Part.BSplineCurve()
+    if curve.rational:
+        result.buildFromPolesMultsKnots(poles, mults, curve.knots, curve.periodic, curve.degree, curve.weights)
+    else:
+        result.buildFromPolesMultsKnots(poles, mults, curve.knots, curve.periodic, curve.degree)
+    return result
+
+
+def from_part(curve):
+    """A kernel BSplineCurve from a Part edge or curve (converted to B-spline if needed)."""
+    import Part
+
+    if isinstance(curve, Part.Shape):
+        edges = curve.Edges
+        if len(edges) != 1:
+            raise InputError(f"expected one edge, got a shape with {len(edges)} edges")
+        edge = edges[0]
+        geom = edge.Curve
+        if not isinstance(geom, Part.BSplineCurve) or not _spans_whole(edge, geom):
+            geom = geom.toBSpline(edge.FirstParameter, edge.LastParameter)
+        curve = geom
+    elif not isinstance(curve, Part.BSplineCurve):
+        if not hasattr(curve, "toBSpline"):
+            raise InputError(f"not a curve or edge: {type(curve).__name__}")
+        curve = curve.toBSpline()
+    poles = np.array([(p.x, p.y, p.z) for p in curve.getPoles()], dtype=float)
+    weights = np.array(curve.getWeights(), dtype=float) if curve.isRational() else np.zeros(0)
+    return _kernel.BSplineCurve(
+        poles,
+        np.array(curve.getKnots(), dtype=float),
+        np.array(curve.getMultiplicities(), dtype=np.int32),
+        curve.Degree,
+        curve.isPeriodic(),
+        weights,
+    )
+
+
+def _spans_whole(edge, geom):
+    span = geom.LastParameter - geom.FirstParameter
+    return (
+        math.isclose(edge.FirstParameter, geom.FirstParameter, abs_tol=1e-12 * span)
+        and math.isclose(edge.LastParameter, geom.LastParameter, abs_tol=1e-12 * span)
+    )
