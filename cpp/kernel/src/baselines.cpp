@@ -12,8 +12,8 @@
 namespace fairsplines {
 
 Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametrization parametrization, bool closed) {
-  validateSamples(q, closed, closed ? 3 : 2, "classic interpolation");
-  const Eigen::VectorXd t = parameters(q, parametrization, closed);
+  const Eigen::VectorXd t = parameters(validateSamples(q, closed, closed ? 3 : 2, "classic interpolation").chords,
+                                       parametrization);
   const int n = static_cast<int>(q.rows());
   Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, n);
   Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, closed ? n + 1 : n);
@@ -32,9 +32,9 @@ Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametriza
 }
 
 BSplineCurve quasiInterpolant(const PointMatrix& q, Parametrization parametrization, bool closed) {
-  validateSamples(q, closed, 3, "the quasi-interpolant");
-  const Eigen::VectorXd t = parameters(q, parametrization, closed);
-  return detail::fitCubic(q, t, closed, 1e-9, EpsilonRule::CaseDistinction, true);
+  const SampleInfo info = validateSamples(q, closed, 3, "the quasi-interpolant");
+  const Eigen::VectorXd t = parameters(info.chords, parametrization);
+  return detail::fitCubic(q, t, closed, info.size, 1e-9, EpsilonRule::CaseDistinction, true);
 }
 
 BSplineCurve controlPointSpline(const PointMatrix& q, bool closed) {

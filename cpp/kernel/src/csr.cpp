@@ -17,8 +17,9 @@ namespace {
 template <int D>
 using Vec = Eigen::Matrix<double, D, 1>;
 
+/// |d1 x d2| / |d1|^3, with a single square root.
 template <int D>
-double curvatureOf(const Vec<D>& d1, const Vec<D>& d2) {
+inline double curvatureOf(const Vec<D>& d1, const Vec<D>& d2) {
   double cross2;
   if constexpr (D == 2) {
     const double z = d1[0] * d2[1] - d1[1] * d2[0];
@@ -27,15 +28,14 @@ double curvatureOf(const Vec<D>& d1, const Vec<D>& d2) {
     cross2 = d1.cross(d2).squaredNorm();
   }
   const double speed2 = d1.squaredNorm();
-  return std::sqrt(cross2) / (speed2 * std::sqrt(speed2));
+  return std::sqrt(cross2 / (speed2 * speed2 * speed2));
 }
 
 /// The quadratic interpolant f_i of q_{i-1}, q_i, q_{i+1} at t_{i-1}, t_i, t_{i+1},
 /// written about its middle node: f_i(t) = q_i + d (t - t_i) + D (t - t_i)^2.
 template <int D>
 struct Quadratic {
-  Vec<D> q, d, D2;  // D2 is the paper-free name for f''/2
-  double ta;        // t_i, the expansion point
+  Vec<D> q, d, D2;  // D2 = f''/2
   /// Cubic blossom F[x, y, z] of the quadratic (degree-raised), given the arguments
   /// relative to the expansion point: (X + Y + Z)/3 and (XY + XZ + YZ)/3.
   Vec<D> blossom3(double X, double Y, double Z) const {
@@ -53,14 +53,13 @@ Vec<D> row(const PointMatrix& q, Eigen::Index i) {
 }
 
 template <int D>
-Quadratic<D> interpolant(const Vec<D>& qm, const Vec<D>& q0, const Vec<D>& qp, double hm, double h0, double t0) {
+Quadratic<D> interpolant(const Vec<D>& qm, const Vec<D>& q0, const Vec<D>& qp, double hm, double h0) {
   // Newton form about t_i: first divided differences on either side, then the second.
   const Vec<D> dm = (q0 - qm) / hm, d0 = (qp - q0) / h0;
   Quadratic<D> f;
   f.D2 = (d0 - dm) / (hm + h0);
   f.d = dm + f.D2 * hm;  // f'(t_i)
   f.q = q0;
-  f.ta = t0;
   return f;
 }
 
@@ -76,76 +75,101 @@ struct Weight {
 };
 
 template <int D>
-void csrPoles(const PointMatrix& q, const Eigen::VectorXd& t, bool closed, const Weight& weight, bool quasiOnly,
+void csrPoles(const PointMatrix& q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
               PointMatrix& out) {
-  const Eigen::Index n = q.rows();
-  const Eigen::Index segments = closed ? n : n - 1;
-  Eigen::VectorXd h(segments);
-  for (Eigen::Index i = 0; i < segments; ++i) h[i] = t[i + 1] - t[i];
-  auto H = [&](Eigen::Index i) { return h[(i + segments) % segments]; };  // cyclic for closed data
+  // One streaming pass over the samples with a window of three quadratics
+  // f_{i-1}, f_i, f_{i+1}; each first divided difference, curvature and mu is computed
+  // once and carried along. Indices wrap only for closed data.
+  const Eigen::Index n = q.rows(), segments = h.size();
+  auto P = [&](Eigen::Index i) { return Eigen::Map<const Vec<D>>(q.data() + D * i); };
+  // First divided difference (q_{s+1} - q_s) / h_s of segment s.
+  // (One reciprocal each: Eigen would divide every coordinate.)
+  auto divided = [&](Eigen::Index s) -> Vec<D> { return (P(s + 1 == n ? 0 : s + 1) - P(s)) * (1.0 / h[s]); };
+  auto hBefore = [&](Eigen::Index i) { return i == 0 ? h[segments - 1] : h[i - 1]; };  // t_i - t_{i-1}
+  // f_i about t_i from the divided differences of the segments before and after q_i.
+  auto quadratic = [&](Eigen::Index i, const Vec<D>& dm, const Vec<D>& d0) {
+    const double hm = hBefore(i);
+    Quadratic<D> f;
+    f.D2 = (d0 - dm) * (1.0 / (hm + h[i]));
+    f.d = dm + f.D2 * hm;  // f'(t_i)
+    f.q = P(i);
+    return f;
+  };
 
-  // f_i and kappa_i for every sample that has two neighbours.
-  std::vector<Quadratic<D>> f(n);
-  Eigen::VectorXd kappa(n);
   const Eigen::Index first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
-  for (Eigen::Index i = first; i <= last; ++i) {
-    const Eigen::Index im = (i + n - 1) % n, ip = (i + 1) % n;
-    f[i] = interpolant<D>(row<D>(q, im), row<D>(q, i), row<D>(q, ip), H(i - 1), H(i), t[i]);
-    kappa[i] = f[i].kappaAt(0.0);
-  }
-  if (!closed) {
-    // Ends of open data: the end quadratics continue outwards, f_0 := f_1, f_{n-1} := f_{n-2};
-    // kappa_0 is the curvature of f_1 at q_0 (mirrored at the other end).
-    f[0] = f[1];
-    f[n - 1] = f[n - 2];
-    kappa[0] = f[1].kappaAt(-h[0]);
-    kappa[n - 1] = f[n - 2].kappaAt(h[n - 2]);
-  }
-
   const Eigen::Index offset = closed ? 0 : 1;  // open curves start with q_0 and F[t_0,t_0,t_1]
-  out.resize(closed ? n : n + 2, q.cols());
-  for (Eigen::Index i = first; i <= last; ++i) {
-    const Eigen::Index im = (i + n - 1) % n, ip = (i + 1) % n;
-    const double hm = H(i - 1), h0 = H(i);
-    // Cubic blossoms at (t_{i-1}, t_i, t_{i+1}) of f_i, f_{i-1}, f_{i+1}, each written
-    // relative to that quadratic's own expansion point.
-    const Vec<D> p = f[i].blossom3(-hm, 0.0, h0);
-    Vec<D> c;
-    if (quasiOnly) {
-      c = p;
-    } else {
-      // For the open ends f_{i-1} or f_{i+1} is f_i itself, expanded about t_i.
-      const bool leftIsSelf = !closed && i == 1, rightIsSelf = !closed && i == n - 2;
-      const double hmm = leftIsSelf ? 0.0 : H(i - 1);  // t_i - t_{expansion of f_{i-1}}
-      const double hpp = rightIsSelf ? 0.0 : H(i);     // t_{expansion of f_{i+1}} - t_i
-      const Vec<D> pL = f[im].blossom3(-hm + hmm, hmm, h0 + hmm);
-      const Vec<D> pR = f[ip].blossom3(-hm - hpp, -hpp, h0 - hpp);
-      // Eq. (6).
-      const double mu_i = weight(kappa[i], kappa[im]);
-      const double mu_ip = weight(kappa[ip], kappa[i]);
-      const double nu_i = weight(kappa[im], kappa[ip]);
-      c = (1.0 - nu_i) * (mu_i * pL + (1.0 - mu_i) * p) + nu_i * ((1.0 - mu_ip) * pR + mu_ip * p);
-    }
-    out.row(i + offset).head<D>() = c.transpose();
+  out.resize(closed ? n : n + 2, D);
+  auto outRow = [&](Eigen::Index r) { return Eigen::Map<Vec<D>>(out.data() + D * r); };
+
+  Vec<D> dCur = divided(first);  // segment i
+  const Vec<D> dBefore = divided(first == 0 ? segments - 1 : first - 1);
+  Quadratic<D> f0 = quadratic(first, dBefore, dCur), fm, fp;
+  double k0 = f0.kappaAt(0.0), km, kp;
+  if (closed) {
+    fm = quadratic(n - 1, divided(n - 2), dBefore);
+    km = fm.kappaAt(0.0);
+  } else {
+    // Ends of open data: the end quadratics continue outwards, f_0 := f_1 and
+    // f_{n-1} := f_{n-2}; kappa_0 is the curvature of f_1 at q_0 (mirrored at the end).
+    fm = f0;
+    km = f0.kappaAt(-h[0]);
   }
-  if (!closed) {
-    // Clamped ends: F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1; mirrored at the end.
-    out.row(0) = q.row(0);
-    out.row(1).head<D>() = f[1].blossom3(-h[0], -h[0], 0.0).transpose();
-    out.row(n).head<D>() = f[n - 2].blossom3(0.0, h[n - 2], h[n - 2]).transpose();
-    out.row(n + 1) = q.row(n - 1);
+  double mu_i = weight(k0, km);
+  for (Eigen::Index i = first; i <= last; ++i) {
+    const bool leftIsSelf = !closed && i == 1, rightIsSelf = !closed && i == n - 2;
+    if (rightIsSelf) {
+      fp = f0;
+      kp = f0.kappaAt(h[n - 2]);
+    } else {
+      const Eigen::Index ip = i + 1 == n ? 0 : i + 1;
+      const Vec<D> dNext = divided(ip);
+      fp = quadratic(ip, dCur, dNext);
+      kp = fp.kappaAt(0.0);
+      dCur = dNext;
+    }
+    const double hm = hBefore(i), h0 = h[i];
+    // p_i: the cubic blossom of f_i at (t_{i-1}, t_i, t_{i+1}).
+    const Vec<D> p = f0.blossom3(-hm, 0.0, h0);
+    const double mu_ip = weight(kp, k0);
+    if (quasiOnly) {
+      outRow(i + offset) = p;
+    } else {
+      // Eq. (6) with its three blossoms. f_{i-1} - f_i vanishes at t_{i-1} and t_i, so it is
+      // (D2_{i-1} - D2_i)(t - t_{i-1})(t - t_i), whose cubic blossom at (t_{i-1}, t_i, t_{i+1})
+      // is -(D2_{i-1} - D2_i) h_{i-1}^2 / 3: p_i^L = p_i - (D2_{i-1} - D2_i) h_{i-1}^2 / 3, and
+      // likewise p_i^R = p_i - (D2_{i+1} - D2_i) h_i^2 / 3. (At the open ends f_{i-1} = f_i.)
+      const double nu_i = weight(km, kp);
+      const double aL = (1.0 - nu_i) * mu_i;    // weight of p_i^L
+      const double aR = nu_i * (1.0 - mu_ip);   // weight of p_i^R
+      outRow(i + offset) = p - ((aL * hm * hm / 3.0) * (fm.D2 - f0.D2) + (aR * h0 * h0 / 3.0) * (fp.D2 - f0.D2));
+    }
+    if (i == first && !closed) {
+      // Clamped start: F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1.
+      outRow(0) = P(0);
+      outRow(1) = f0.blossom3(-h[0], -h[0], 0.0);
+    }
+    if (i == last && !closed) {
+      // Clamped end: F[t_{n-2},t_{n-1},t_{n-1}] of f_{n-2} and q_{n-1}.
+      outRow(n) = f0.blossom3(0.0, h[n - 2], h[n - 2]);
+      outRow(n + 1) = P(n - 1);
+    }
+    fm = f0;
+    km = k0;
+    f0 = fp;
+    k0 = kp;
+    mu_i = mu_ip;
   }
 }
 
 }  // namespace
 
-BSplineCurve fitCubic(const PointMatrix& q, const Eigen::VectorXd& t, bool closed, double epsilon,
+BSplineCurve fitCubic(const PointMatrix& q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
                       EpsilonRule rule, bool quasiOnly) {
-  const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
   const Weight weight{epsilon / size, rule};
+  const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
   PointMatrix poles;
-  if (q.cols() == 2) csrPoles<2>(q, t, closed, weight, quasiOnly, poles);
-  else csrPoles<3>(q, t, closed, weight, quasiOnly, poles);
+  if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
+  else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
   return closed ? periodicCubic(std::move(poles), t) : clampedCubic(std::move(poles), t);
 }
 
@@ -160,7 +184,7 @@ PointMatrix quadraticHandles(const PointMatrix& q, const Eigen::VectorXd& t, boo
   Eigen::VectorXd kappa(n);
   const Eigen::Index first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
   for (Eigen::Index i = first; i <= last; ++i) {
-    f[i] = interpolant<D>(row<D>(q, (i + n - 1) % n), row<D>(q, i), row<D>(q, (i + 1) % n), H(i - 1), H(i), t[i]);
+    f[i] = interpolant<D>(row<D>(q, (i + n - 1) % n), row<D>(q, i), row<D>(q, (i + 1) % n), H(i - 1), H(i));
     kappa[i] = f[i].kappaAt(0.0);
   }
   PointMatrix m(segments, q.cols());
@@ -185,20 +209,19 @@ PointMatrix quadraticHandles(const PointMatrix& q, const Eigen::VectorXd& t, boo
 }  // namespace detail
 
 BSplineCurve csrSpline(const PointMatrix& q, const CsrOptions& options) {
-  validateSamples(q, options.closed, 3, "the csr-spline");
+  const SampleInfo info = validateSamples(q, options.closed, 3, "the csr-spline");
   const Eigen::VectorXd t = options.parameters.size() > 0
                                 ? validatedParameters(options.parameters, q.rows(), options.closed)
-                                : parameters(q, options.parametrization, options.closed);
+                                : parameters(info.chords, options.parametrization);
   if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
-  return detail::fitCubic(q, t, options.closed, options.epsilon, options.rule, false);
+  return detail::fitCubic(q, t, options.closed, info.size, options.epsilon, options.rule, false);
 }
 
 BSplineCurve quadraticDesign(const PointMatrix& q, Parametrization parametrization, bool closed, double epsilon) {
-  validateSamples(q, closed, 3, "the quadratic design");
+  const SampleInfo info = validateSamples(q, closed, 3, "the quadratic design");
   if (!(epsilon > 0.0)) throw InputError("epsilon must be positive");
-  const Eigen::VectorXd t = parameters(q, parametrization, closed);
-  const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
-  const detail::Weight weight{epsilon / size, EpsilonRule::CaseDistinction};
+  const Eigen::VectorXd t = parameters(info.chords, parametrization);
+  const detail::Weight weight{epsilon / info.size, EpsilonRule::CaseDistinction};
   const PointMatrix m = q.cols() == 2 ? detail::quadraticHandles<2>(q, t, closed, weight)
                                       : detail::quadraticHandles<3>(q, t, closed, weight);
   const Eigen::Index n = q.rows(), segments = m.rows();

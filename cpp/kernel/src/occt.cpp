@@ -15,22 +15,25 @@ namespace fairsplines {
 
 Handle(Geom_BSplineCurve) toOcct(const BSplineCurve& curve) {
   const int n = static_cast<int>(curve.poles.rows());
-  const int dim = curve.dimension();
-  TColgp_Array1OfPnt poles(1, n);
-  for (int i = 0; i < n; ++i) {
-    poles.SetValue(i + 1, gp_Pnt(curve.poles(i, 0), curve.poles(i, 1), dim > 2 ? curve.poles(i, 2) : 0.0));
-  }
   const int k = static_cast<int>(curve.knots.size());
-  TColStd_Array1OfReal knots(1, k);
-  TColStd_Array1OfInteger mults(1, k);
-  for (int i = 0; i < k; ++i) {
-    knots.SetValue(i + 1, curve.knots[i]);
-    mults.SetValue(i + 1, curve.mults[i]);
+  if (curve.mults.size() != k) throw InputError("a B-spline needs one multiplicity per knot");
+  if (curve.isRational() && curve.weights.size() != n) throw InputError("a rational B-spline needs one weight per pole");
+  // Row-major (n x 3) doubles have gp_Pnt's layout: OCCT's arrays can borrow the
+  // kernel's memory (NCollection_Array1's non-owning constructor); the curve copies it.
+  static_assert(sizeof(gp_Pnt) == 3 * sizeof(double), "gp_Pnt is three doubles");
+  PointMatrix padded;
+  const PointMatrix* source = &curve.poles;
+  if (curve.dimension() == 2) {
+    padded = PointMatrix::Zero(n, 3);
+    padded.leftCols(2) = curve.poles;
+    source = &padded;
   }
   try {
+    const TColgp_Array1OfPnt poles(*reinterpret_cast<const gp_Pnt*>(source->data()), 1, n);
+    const TColStd_Array1OfReal knots(*curve.knots.data(), 1, k);
+    const TColStd_Array1OfInteger mults(*curve.mults.data(), 1, k);
     if (curve.isRational()) {
-      TColStd_Array1OfReal weights(1, n);
-      for (int i = 0; i < n; ++i) weights.SetValue(i + 1, curve.weights[i]);
+      const TColStd_Array1OfReal weights(*curve.weights.data(), 1, n);
       return new Geom_BSplineCurve(poles, weights, knots, mults, curve.degree, curve.periodic);
     }
     return new Geom_BSplineCurve(poles, knots, mults, curve.degree, curve.periodic);

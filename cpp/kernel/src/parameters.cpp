@@ -14,7 +14,7 @@ Parametrization parseParametrization(const std::string& name) {
   throw InputError("unknown parametrization '" + name + "': use 'chordal', 'centripetal' or 'uniform'");
 }
 
-void validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method) {
+SampleInfo validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
     std::ostringstream msg;
@@ -27,45 +27,62 @@ void validateSamples(const PointMatrix& q, bool closed, int minPoints, const cha
         << ", got " << n;
     throw InputError(msg.str());
   }
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (!q.row(i).allFinite()) {
-      std::ostringstream msg;
-      msg << "point " << i << " is not finite (NaN or infinity)";
-      throw InputError(msg.str());
+  if (!q.allFinite()) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (!q.row(i).allFinite()) {
+        std::ostringstream msg;
+        msg << "point " << i << " is not finite (NaN or infinity)";
+        throw InputError(msg.str());
+      }
     }
   }
   // Coincidence is judged relative to the size of the data.
   const Eigen::RowVectorXd lo = q.colwise().minCoeff(), hi = q.colwise().maxCoeff();
-  const double size = (hi - lo).norm();
-  if (size <= 1e-300 || size <= 1e-14 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())) {
+  SampleInfo info;
+  info.size = (hi - lo).norm();
+  if (info.size <= 1e-300 || info.size <= 1e-14 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())) {
     throw InputError("all points coincide");
   }
-  const double tol = 1e-12 * size;
-  const Eigen::Index last = closed ? n : n - 1;
-  for (Eigen::Index i = 0; i < last; ++i) {
-    const Eigen::Index j = (i + 1) % n;
-    if ((q.row(j) - q.row(i)).norm() <= tol) {
+  const double tol = 1e-12 * info.size;
+  const Eigen::Index segments = closed ? n : n - 1;
+  info.chords.resize(segments);
+  const int dim = static_cast<int>(q.cols());
+  const double* data = q.data();
+  for (Eigen::Index i = 0; i < segments; ++i) {
+    const Eigen::Index j = i + 1 == n ? 0 : i + 1;
+    double squared = 0.0;
+    for (int c = 0; c < dim; ++c) {
+      const double d = data[dim * j + c] - data[dim * i + c];
+      squared += d * d;
+    }
+    info.chords[i] = std::sqrt(squared);
+    if (info.chords[i] <= tol) {
       std::ostringstream msg;
       msg << "points " << i << " and " << j << " coincide";
       if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
       throw InputError(msg.str());
     }
   }
+  return info;
+}
+
+Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
+  Eigen::VectorXd t(chords.size() + 1);
+  t[0] = 0.0;
+  for (Eigen::Index i = 0; i < chords.size(); ++i) {
+    double h = 1.0;
+    if (kind == Parametrization::Chordal) h = chords[i];
+    else if (kind == Parametrization::Centripetal) h = std::sqrt(chords[i]);
+    t[i + 1] = t[i] + h;
+  }
+  return t;
 }
 
 Eigen::VectorXd parameters(const PointMatrix& q, Parametrization kind, bool closed) {
-  const Eigen::Index n = q.rows();
-  const Eigen::Index m = closed ? n + 1 : n;
-  Eigen::VectorXd t(m);
-  t[0] = 0.0;
-  for (Eigen::Index i = 1; i < m; ++i) {
-    const double chord = (q.row(i % n) - q.row(i - 1)).norm();
-    double h = 1.0;
-    if (kind == Parametrization::Chordal) h = chord;
-    else if (kind == Parametrization::Centripetal) h = std::sqrt(chord);
-    t[i] = t[i - 1] + h;
-  }
-  return t;
+  const Eigen::Index n = q.rows(), segments = closed ? n : n - 1;
+  Eigen::VectorXd chords(segments);
+  for (Eigen::Index i = 0; i < segments; ++i) chords[i] = (q.row(i + 1 == n ? 0 : i + 1) - q.row(i)).norm();
+  return parameters(chords, kind);
 }
 
 Eigen::VectorXd validatedParameters(const Eigen::VectorXd& t, Eigen::Index n, bool closed) {

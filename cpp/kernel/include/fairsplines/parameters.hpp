@@ -10,14 +10,22 @@ enum class Parametrization { Chordal, Centripetal, Uniform };
 /// Parses "chordal", "centripetal" or "uniform"; throws InputError otherwise.
 Parametrization parseParametrization(const std::string& name);
 
+/// What validation learns about the samples on the way.
+struct SampleInfo {
+  Eigen::VectorXd chords;  ///< |q_{i+1} - q_i|, one more (back to q_0) for closed data
+  double size = 0.0;       ///< diagonal of the bounding box
+};
+
 /// Checks samples for the spline constructions: at least `minPoints` rows, 2 or 3
 /// columns, finite values, not all coincident, no two consecutive (cyclically
 /// consecutive when `closed`) coincident. Throws InputError naming the problem.
-void validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method);
+SampleInfo validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method);
 
-/// Parameters for the samples: t_0 = 0 and t_{i+1} - t_i = |q_{i+1} - q_i|^a with
-/// a = 1 (chordal), 1/2 (centripetal) or 0 (uniform). For closed data one more
-/// value t_n closes the loop back to q_0 (size n+1), else size n.
+/// Parameters from chord lengths: t_0 = 0 and t_{i+1} - t_i = chord_i^a with a = 1
+/// (chordal), 1/2 (centripetal) or 0 (uniform). Size: one more than the chords.
+Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind);
+
+/// Parameters for samples (n values, n + 1 for closed data: t_n closes the loop).
 Eigen::VectorXd parameters(const PointMatrix& q, Parametrization kind, bool closed);
 
 /// Checks user-given parameters: n values (n + 1 when closed), finite, strictly

@@ -1,0 +1,54 @@
+// Benchmark: csr-spline (kernel, ending in a Geom_BSplineCurve) against OCCT's
+// GeomAPI_Interpolate on the same points, one core, one run.
+#include <GeomAPI_Interpolate.hxx>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <algorithm>
+
+#include "fairsplines/baselines.hpp"
+#include "fairsplines/csr.hpp"
+#include "fairsplines/occt.hpp"
+
+using namespace fairsplines;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+/// A planar spiral-like curve with varying curvature, sampled at uneven steps.
+PointMatrix samples(int n) {
+  PointMatrix q(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double s = 20.0 * i / n + 0.3 * std::sin(0.7 * i);
+    q.row(i) << (1 + s) * std::cos(s), (1 + s) * std::sin(s), 0.1 * s;
+  }
+  return q;
+}
+
+template <class F>
+double bestSeconds(F&& f, int repeats) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = Clock::now();
+    f();
+    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  return best;
+}
+
+}  // namespace
+
+int main() {
+  std::printf("%10s %12s %12s %14s %10s\n", "N", "csr [ms]", "csr [Mpt/s]", "OCCT interp [ms]", "ratio");
+  for (int n : {1000, 10000, 100000, 1000000}) {
+    const PointMatrix q = samples(n);
+    const int repeats = n >= 1000000 ? 3 : 7;
+    int poles = 0;
+    const double csr = bestSeconds([&] { poles += toOcct(csrSpline(q))->NbPoles(); }, repeats);
+    const double occt = bestSeconds(
+        [&] { poles += classicInterpolation(q, Parametrization::Chordal, false)->NbPoles(); }, repeats);
+    std::printf("%10d %12.3f %12.1f %14.3f %10.1f\n", n, csr * 1e3, n / csr * 1e-6, occt * 1e3, occt / csr);
+    if (poles == 0) return 1;
+  }
+  return 0;
+}

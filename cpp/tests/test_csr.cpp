@@ -1,0 +1,161 @@
+// csr-spline, Section 4, eq. (6), judged by OCCT evaluation of the produced curve.
+#include <gtest/gtest.h>
+
+#include <Geom_BSplineCurve.hxx>
+#include <random>
+
+#include "fairsplines/baselines.hpp"
+#include "fairsplines/csr.hpp"
+#include "fairsplines/errors.hpp"
+#include "fairsplines/occt.hpp"
+#include "test_support.hpp"
+
+using namespace fairsplines;
+using fairsplines::test::circleSamples;
+using fairsplines::test::fig2Samples;
+using fairsplines::test::signChanges;
+
+namespace {
+
+/// Largest jump of the second derivative across the interior knots, relative to its size.
+double c2Jump(const Handle(Geom_BSplineCurve)& c) {
+  double worst = 0.0, scale = 0.0;
+  for (int k = 2; k < c->NbKnots(); ++k) {
+    gp_Vec left = c->LocalDN(c->Knot(k), k - 1, k, 2);
+    gp_Vec right = c->LocalDN(c->Knot(k), k, k + 1, 2);
+    worst = std::max(worst, (left - right).Magnitude());
+    scale = std::max(scale, std::max(left.Magnitude(), right.Magnitude()));
+  }
+  return worst / scale;
+}
+
+}  // namespace
+
+TEST(Csr, StraightLine_IsReproduced) {
+  PointMatrix q(9, 3);
+  double s = 0.0;
+  for (int i = 0; i < 9; ++i) {
+    q.row(i) = Eigen::RowVector3d(1, 2, 3) + s * Eigen::RowVector3d(0.3, -0.5, 0.8);
+    s += 0.2 + 0.7 * ((i * 7) % 5);  // uneven spacing
+  }
+  const Handle(Geom_BSplineCurve) c = toOcct(csrSpline(q));
+  const gp_Dir dir(0.3, -0.5, 0.8);
+  for (int j = 0; j <= 200; ++j) {
+    const double u = c->FirstParameter() + (c->LastParameter() - c->FirstParameter()) * j / 200.0;
+    const gp_Vec off(gp_Pnt(1, 2, 3), c->Value(u));
+    EXPECT_LT(off.Crossed(gp_Vec(dir)).Magnitude(), 1e-12 * 20);  // on the line
+    gp_Pnt p;
+    gp_Vec d1, d2;
+    c->D2(u, p, d1, d2);
+    EXPECT_LT(d1.Crossed(d2).Magnitude() / std::pow(d1.Magnitude(), 3), 1e-9);
+  }
+}
+
+TEST(Csr, DenseCircle_CurvatureWithin1e3OfInverseRadius) {
+  const double r = 2.5;
+  for (bool closed : {false, true}) {
+    const PointMatrix q = closed ? circleSamples(120, r, 0, 2 * M_PI, false) : circleSamples(80, r, 0.3, 4.0);
+    CsrOptions options;
+    options.closed = closed;
+    const Handle(Geom_BSplineCurve) c = toOcct(csrSpline(q, options));
+    EXPECT_EQ(c->IsPeriodic(), closed);
+    for (int j = 0; j <= 1000; ++j) {
+      const double u = c->FirstParameter() + (c->LastParameter() - c->FirstParameter()) * j / 1000.0;
+      gp_Pnt p;
+      gp_Vec d1, d2;
+      c->D2(u, p, d1, d2);
+      const double kappa = d1.Crossed(d2).Magnitude() / std::pow(d1.Magnitude(), 3);
+      EXPECT_NEAR(kappa, 1.0 / r, 1e-3) << (closed ? "closed" : "open") << " u " << u;
+    }
+  }
+}
+
+TEST(Csr, QuadraticData_IsReproducedExactly) {
+  // Samples of a quadratic f at non-uniform parameters: every blossom in eq. (6) is f's.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int n = 15;
+  Eigen::VectorXd t(n);
+  t[0] = -1.0;
+  for (int i = 1; i < n; ++i) t[i] = t[i - 1] + 0.05 + unit(rng);
+  auto f = [](double x) { return Eigen::RowVector3d(1 + 2 * x - x * x, 0.5 * x * x, 3 - x); };
+  PointMatrix q(n, 3);
+  for (int i = 0; i < n; ++i) q.row(i) = f(t[i]);
+  CsrOptions options;
+  options.parameters = t;
+  const Handle(Geom_BSplineCurve) c = toOcct(csrSpline(q, options));
+  for (int j = 0; j <= 300; ++j) {
+    const double u = t[0] + (t[n - 1] - t[0]) * j / 300.0;
+    const gp_Pnt p = c->Value(u);
+    EXPECT_LT((Eigen::RowVector3d(p.X(), p.Y(), p.Z()) - f(u)).norm(), 1e-12 * f(u).norm() + 1e-13);
+  }
+}
+
+TEST(Csr, EndsInterpolatedAndC2Throughout) {
+  const PointMatrix q = fig2Samples();
+  const Handle(Geom_BSplineCurve) c = toOcct(csrSpline(q));
+  const gp_Pnt a = c->Value(c->FirstParameter()), b = c->Value(c->LastParameter());
+  EXPECT_EQ(a.X(), q(0, 0));
+  EXPECT_EQ(a.Y(), q(0, 1));
+  EXPECT_EQ(b.X(), q(q.rows() - 1, 0));
+  EXPECT_EQ(b.Y(), q(q.rows() - 1, 1));
+  EXPECT_GE(c->Continuity(), GeomAbs_C2);
+  EXPECT_LT(c2Jump(c), 1e-12);
+}
+
+TEST(Csr, Fig2_ClassicOscillatesCsrDoesNot) {
+  const PointMatrix q = fig2Samples();
+  EXPECT_GE(signChanges(classicInterpolation(q, Parametrization::Chordal, false)), 2);
+  EXPECT_EQ(signChanges(toOcct(csrSpline(q))), 0);
+  EXPECT_GE(signChanges(toOcct(quasiInterpolant(q, Parametrization::Chordal, false))), 2);
+}
+
+TEST(Csr, ClosedCurveIsPeriodicC2) {
+  PointMatrix q(40, 3);
+  for (int i = 0; i < 40; ++i) {
+    const double a = 2 * M_PI * i / 40;
+    q.row(i) << 3 * std::cos(a), std::sin(a), 0.2 * std::sin(3 * a);
+  }
+  CsrOptions options;
+  options.closed = true;
+  const Handle(Geom_BSplineCurve) c = toOcct(csrSpline(q, options));
+  EXPECT_TRUE(c->IsPeriodic());
+  EXPECT_LT(c2Jump(c), 1e-12);
+  EXPECT_LT(c->Value(c->FirstParameter()).Distance(c->Value(c->LastParameter())), 1e-12);
+}
+
+TEST(Csr, EpsilonRulesBothKeepALineStraight) {
+  PointMatrix q(6, 2);
+  q << 0, 0, 1, 1, 2, 2, 4, 4, 5, 5, 9, 9;
+  for (EpsilonRule rule : {EpsilonRule::CaseDistinction, EpsilonRule::Additive}) {
+    CsrOptions options;
+    options.rule = rule;
+    const BSplineCurve curve = csrSpline(q, options);
+    for (int i = 0; i < curve.poles.rows(); ++i) EXPECT_NEAR(curve.poles(i, 0), curve.poles(i, 1), 1e-14);
+  }
+}
+
+TEST(Csr, BadInputThrowsNamedInputError) {
+  auto message = [](const PointMatrix& q) {
+    try {
+      csrSpline(q);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  PointMatrix two(2, 2);
+  two << 0, 0, 1, 1;
+  EXPECT_NE(message(two).find("at least 3"), std::string::npos);
+  PointMatrix dup(4, 2);
+  dup << 0, 0, 1, 1, 1, 1, 2, 0;
+  EXPECT_NE(message(dup).find("points 1 and 2 coincide"), std::string::npos);
+  PointMatrix same = PointMatrix::Constant(4, 3, 1.5);
+  EXPECT_NE(message(same).find("all points coincide"), std::string::npos);
+  PointMatrix nan(4, 2);
+  nan << 0, 0, 1, std::nan(""), 2, 0, 3, 1;
+  EXPECT_NE(message(nan).find("point 1 is not finite"), std::string::npos);
+  PointMatrix wide(4, 4);
+  wide.setRandom();
+  EXPECT_NE(message(wide).find("2 or 3 coordinates"), std::string::npos);
+}
