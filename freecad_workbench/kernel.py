@@ -39,8 +39,19 @@ def as_points(points, name="points"):
 def to_part(curve):
     """Exact hand-over of a kernel BSplineCurve to a FreeCAD Part.BSplineCurve.
 
-    The arrays go straight into buildFromPolesMultsKnots, which reads numpy arrays
-    (no per-pole Python objects); bit-for-bit exact."""
+    Fastest route first: the kernel builds the OCCT edge and FreeCAD adopts it through
+    Part.__fromPythonOCC__ (no copy of the data in Python). Without the SWIG bridge the
+    arrays go into buildFromPolesMultsKnots. Both are bit-for-bit exact."""
+    if _BRIDGE is not None:
+        import Part
+
+        shape = Part.__fromPythonOCC__(_BRIDGE.adopt_shape(_kernel.edge_address(curve)))
+        return shape.Edge1.Curve
+    return to_part_arrays(curve)
+
+
+def to_part_arrays(curve):
+    """The array route of to_part (buildFromPolesMultsKnots reads numpy arrays)."""
     import Part
 
     poles = curve.poles
@@ -56,6 +67,17 @@ def to_part(curve):
     return result
 
 
+def _load_bridge():
+    try:
+        from . import occ_bridge
+    except ImportError:
+        return None
+    return occ_bridge
+
+
+_BRIDGE = _load_bridge()
+
+
 def from_part(curve):
     """A kernel BSplineCurve from a Part edge or curve (converted to B-spline if needed)."""
     import Part
@@ -64,15 +86,11 @@ def from_part(curve):
         edges = curve.Edges
         if len(edges) != 1:
             raise InputError(f"expected one edge, got a shape with {len(edges)} edges")
-        edge = edges[0]
-        geom = edge.Curve
-        if not isinstance(geom, Part.BSplineCurve) or not _spans_whole(edge, geom):
-            geom = geom.toBSpline(edge.FirstParameter, edge.LastParameter)
-        curve = geom
+        curve = _edge_bspline(edges[0])
     elif not isinstance(curve, Part.BSplineCurve):
-        if not hasattr(curve, "toBSpline"):
+        if not hasattr(curve, "toShape"):
             raise InputError(f"not a curve or edge: {type(curve).__name__}")
-        curve = curve.toBSpline()
+        curve = _edge_bspline(curve.toShape())
     poles = np.array([(p.x, p.y, p.z) for p in curve.getPoles()], dtype=float)
     weights = np.array(curve.getWeights(), dtype=float) if curve.isRational() else np.zeros(0)
     return _kernel.BSplineCurve(
@@ -83,6 +101,20 @@ def from_part(curve):
         curve.isPeriodic(),
         weights,
     )
+
+
+def _edge_bspline(edge):
+    """The edge's exact (rational where needed) B-spline, restricted to the edge."""
+    import Part
+
+    geom = edge.Curve
+    if not isinstance(geom, Part.BSplineCurve):
+        edge = edge.toNurbs().Edges[0]  # exact conversion (BRepBuilderAPI_NurbsConvert)
+        geom = edge.Curve
+    if not _spans_whole(edge, geom):
+        geom = geom.copy()
+        geom.segment(edge.FirstParameter, edge.LastParameter)
+    return geom
 
 
 def _spans_whole(edge, geom):

@@ -3,6 +3,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <TopoDS_Edge.hxx>
+#include <cstdint>
+
 #include "bindings.hpp"
 #include "fairsplines/analysis.hpp"
 #include "fairsplines/baselines.hpp"
@@ -111,6 +115,14 @@ void bindCurves(py::module_& m) {
       "max_distance",
       [](const BSplineCurve& curve, const PointMatrix& q) { return maxDistanceToPoints(toOcct(curve), q); },
       "curve"_a, "points"_a);
+  m.def(
+      "edge_address",
+      [](const BSplineCurve& curve) {
+        // A heap TopoDS_Shape for occ_bridge.adopt_shape, which takes ownership.
+        auto* shape = new TopoDS_Shape(BRepBuilderAPI_MakeEdge(toOcct(curve)).Edge());
+        return reinterpret_cast<std::uintptr_t>(shape);
+      },
+      "curve"_a, "Address of a new TopoDS_Edge holding the curve; pass it to occ_bridge.adopt_shape at once.");
   m.def(
       "to_brep",
       [](const BSplineCurve& curve) { return py::bytes(toBrepString(toOcct(curve))); }, "curve"_a,
