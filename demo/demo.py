@@ -1,0 +1,136 @@
+"""FairSplines headless demo: run by `make demo` as `freecadcmd demo/demo.py`.
+
+Builds the csr paper's Fig. 2 situation, a half circle continued by an almost flat
+parabola and sampled uniformly, and fits the samples with the csr-spline (as a
+parametric CsrFit feature that follows its Points source) and with the baselines.
+Writes into $FAIRSPLINES_OUT (default: out/demo):
+  fairsplines_demo.FCStd   the document (open it in FreeCAD)
+  fig2_curvature.png       curvature against arc length: csr-spline and classic interpolation
+  fig2_curves.png          the curves with the samples and their curvature combs
+  summary.txt              the measured figures
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+import FreeCAD
+import Part
+import Points
+
+import freecad_workbench as fw
+from freecad_workbench.features.csr_fit import make_csr_fit
+from freecad_workbench.gui.comb import comb_lines
+from freecad_workbench.gui.plot import curvature_plot
+
+
+def fig2_samples(per_half_circle=12, parabola_samples=19):
+    h = math.pi / per_half_circle
+    a = np.arange(per_half_circle + 1) * h
+    s = np.arange(1, parabola_samples + 1) * h
+    return np.r_[np.c_[np.cos(a), np.sin(a)], np.c_[-1.0 + 0.02 * s**2, -s]]
+
+
+def add_shape(doc, name, shape, color):
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = shape
+    if FreeCAD.GuiUp:
+        obj.ViewObject.LineColor = color
+    return obj
+
+
+def picture_of_curves(path, samples, curves):
+    """Side by side, zoomed on the transition: each curve with its curvature comb drawn
+    outside (teeth cross to the inside where the curvature changes sign)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(11, 6), dpi=100)
+    FigureCanvasAgg(fig)
+    for index, ((label, curve), color) in enumerate(zip(curves, ("black", "tab:red")), start=1):
+        ax = fig.add_subplot(1, len(curves), index)
+        comb = comb_lines(curve, scale=-0.6, n=600)
+        for base, tip in zip(comb.base, comb.tip):
+            ax.plot([base[0], tip[0]], [base[1], tip[1]], color="tab:blue", linewidth=0.4, alpha=0.6)
+        ax.plot(comb.tip[:, 0], comb.tip[:, 1], color="tab:blue", linewidth=0.8)
+        u = np.linspace(curve.FirstParameter, curve.LastParameter, 2000)
+        points = np.array([tuple(curve.value(x)) for x in u])
+        ax.plot(points[:, 0], points[:, 1], color=color, linewidth=1.8, label=label)
+        ax.plot(samples[:, 0], samples[:, 1], "o", color="tab:green", markersize=4, label="samples")
+        ax.set_xlim(-1.9, 0.1)
+        ax.set_ylim(-2.2, 1.0)
+        ax.set_aspect("equal")
+        ax.set_title(f"{label}: {fw.curvature_sign_changes(curve)} curvature sign changes")
+        ax.legend(loc="lower right")
+    fig.suptitle("Fig. 2 data at the circle-parabola transition, with curvature combs")
+    fig.tight_layout()
+    fig.savefig(path)
+
+
+def main():
+    out = os.environ.get("FAIRSPLINES_OUT", os.path.join(os.getcwd(), "out", "demo"))
+    os.makedirs(out, exist_ok=True)
+    samples = fig2_samples()
+
+    doc = FreeCAD.newDocument("FairSplinesDemo")
+    cloud = doc.addObject("Points::Feature", "Fig2Samples")
+    cloud.Points = Points.Points([FreeCAD.Vector(x, y, 0) for x, y in samples])
+    fit = make_csr_fit(doc, [cloud], name="CsrSpline")
+
+    classic = fw.interpolate_classic(samples)
+    curves = {
+        "csr-spline": fit,
+        "classic C2 interpolation": add_shape(doc, "ClassicInterpolation", classic.toShape(), (0.8, 0.1, 0.1)),
+        "quasi-interpolant": add_shape(doc, "QuasiInterpolant", fw.quasi_interpolant(samples).toShape(), (1, 0.6, 0)),
+        "data as control points": add_shape(
+            doc, "ControlPointSpline", fw.control_point_spline(samples).toShape(), (0.5, 0.5, 0.5)
+        ),
+    }
+    sparse = samples[::4]
+    add_shape(doc, "QuadraticDesign", fw.quadratic_design(sparse).toShape(), (0.1, 0.6, 0.1))
+    theta = np.linspace(0, 2 * math.pi, 24, endpoint=False)
+    ellipse = np.c_[3 + 1.5 * np.cos(theta), 0.6 * np.sin(theta)]
+    closed_cloud = doc.addObject("Points::Feature", "EllipseSamples")
+    closed_cloud.Points = Points.Points([FreeCAD.Vector(x, y, 0) for x, y in ellipse])
+    make_csr_fit(doc, [closed_cloud], closed=True, name="ClosedCsrSpline")
+    doc.recompute()
+    if fit.Status != "ok":
+        raise SystemExit(f"demo: the csr fit failed: {fit.Status}")
+
+    edges = {label: obj.Shape.Edges[0] for label, obj in curves.items()}
+    csr_curve = edges["csr-spline"].Curve
+    lines = ["FairSplines demo: Fig. 2 of the csr paper (half circle + flat parabola, "
+             f"{len(samples)} uniform samples)", ""]
+    lines.append(f"{'curve':<28}{'curvature sign changes':>24}{'max distance to data':>22}")
+    for label, edge in edges.items():
+        lines.append(f"{label:<28}{fw.curvature_sign_changes(edge):>24d}{fw.max_distance(edge, samples):>22.2e}")
+    lines += ["", f"csr-spline continuity: {csr_curve.Continuity}, poles: {csr_curve.NbPoles}"]
+
+    path_doc = os.path.join(out, "fairsplines_demo.FCStd")
+    doc.saveAs(path_doc)
+    curvature_plot(
+        [(edges["csr-spline"], "csr-spline"), (edges["classic C2 interpolation"], "classic C2 interpolation")],
+        path=os.path.join(out, "fig2_curvature.png"),
+        title="Fig. 2 data: signed curvature against arc length",
+    )
+    picture_of_curves(
+        os.path.join(out, "fig2_curves.png"),
+        samples,
+        [("csr-spline", csr_curve), ("classic C2 interpolation", classic)],
+    )
+    with open(os.path.join(out, "summary.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png and summary.txt in {out}")
+    FreeCAD.closeDocument(doc.Name)
+
+
+try:
+    main()
+except Exception as exc:  # report, and make freecadcmd's exit status say so
+    import traceback
+
+    traceback.print_exc()
+    sys.stdout.flush()
+    os._exit(1)
