@@ -83,17 +83,25 @@ def comb_lines(edge, scale=1.0, n=DEFAULT_SAMPLES):
 
 
 def auto_scale(edges, n=DEFAULT_SAMPLES):
-    """Absolute scale that makes the longest tooth of these edges AUTO_LENGTH of their
-    bounding-box diagonal (1.0 if they are straight)."""
-    edges = list(edges)
-    box = FreeCAD.BoundBox()
-    kappa_max = 0.0
-    for edge in edges:
-        box.add((edge if isinstance(edge, Part.Shape) else edge.toShape()).BoundBox)
-        kappa_max = max(kappa_max, float(np.max(np.abs(curvature_profile(as_bspline(edge), n).kappa))))
-    if kappa_max == 0.0 or not box.isValid() or box.DiagonalLength == 0.0:
+    """Absolute scale that makes the longest tooth of these edges AUTO_LENGTH of the
+    diagonal of their sampled points' bounding box (1.0 if they are straight)."""
+    return _auto_scale([comb_lines(edge, 1.0, n) for edge in edges])
+
+
+def _auto_scale(unit_combs):
+    # The box of the samples, not Shape.BoundBox: OCCT tightens that once the shape is
+    # tessellated, which would make the comb change size without its curve changing.
+    points = np.vstack([c.base for c in unit_combs]) if unit_combs else np.zeros((0, 3))
+    kappa_max = max((float(np.max(np.abs(c.kappa))) for c in unit_combs if len(c.kappa)), default=0.0)
+    diagonal = float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
+    if kappa_max == 0.0 or diagonal == 0.0:
         return 1.0
-    return AUTO_LENGTH * box.DiagonalLength / kappa_max
+    return AUTO_LENGTH * diagonal / kappa_max
+
+
+def scaled(comb, scale):
+    """The comb with its teeth multiplied by scale."""
+    return Comb(comb.base, comb.base + scale * (comb.tip - comb.base), comb.kappa, comb.s)
 
 
 def edges_of(obj, sub=""):
@@ -207,8 +215,9 @@ def _compute(key):
     if not edges:
         return []
     factor, samples = get_style()
-    scale = factor * auto_scale(edges, samples)
-    return [comb_lines(edge, scale, samples) for edge in edges]
+    unit = [comb_lines(edge, 1.0, samples) for edge in edges]
+    scale = factor * _auto_scale(unit)
+    return [scaled(c, scale) for c in unit]
 
 
 def shown():

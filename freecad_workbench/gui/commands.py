@@ -10,6 +10,9 @@ import FreeCADGui
 from ..features.csr_fit import usable_source
 from . import comb, icon_path
 
+translate = FreeCAD.Qt.translate
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
 COMMANDS = ("FairSplines_CsrFit", "FairSplines_CurvatureComb", "FairSplines_CurvaturePlot")
 
 
@@ -22,7 +25,7 @@ def selected_links(doc=None):
     links = []
     for sel in FreeCADGui.Selection.getCompleteSelection():
         obj = sel.Object
-        if obj.Document != doc:
+        if obj.Document.Name != doc.Name:
             continue
         subs = sel.SubElementNames or ("",)
         links.extend((obj, sub) for sub in subs)
@@ -52,9 +55,12 @@ class CsrFitCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("FairSplines_CsrFit"),
-            "MenuText": "Csr fit",
-            "ToolTip": "Fit a csr-spline to the selected vertices, Points object, sketch points or edges.\n"
-            "Select points in order; edges are sampled.",
+            "MenuText": QT_TRANSLATE_NOOP("FairSplines_CsrFit", "Csr fit"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "FairSplines_CsrFit",
+                "Fit a csr-spline to the selected vertices, Points object, sketch points or edges.\n"
+                "Select points in order; edges are sampled.",
+            ),
         }
 
     def IsActive(self):
@@ -75,9 +81,11 @@ class CurvatureCombCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("FairSplines_CurvatureComb"),
-            "MenuText": "Curvature comb",
-            "ToolTip": "Show or hide the curvature comb of the selected edges.\n"
-            "With nothing selected, hide all combs.",
+            "MenuText": QT_TRANSLATE_NOOP("FairSplines_CurvatureComb", "Curvature comb"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "FairSplines_CurvatureComb",
+                "Show or hide the curvature comb of the selected edges.\nWith nothing selected, hide all combs.",
+            ),
         }
 
     def IsActive(self):
@@ -92,7 +100,7 @@ class CurvatureCombCommand:
             if not FreeCADGui.Control.activeDialog():
                 FreeCADGui.Control.showDialog(CombTaskPanel())
         elif isinstance(_active_panel(), CombTaskPanel):
-            FreeCADGui.Control.closeDialog()
+            _active_panel()._close()
         FreeCADGui.updateGui()
 
 
@@ -100,8 +108,10 @@ class CurvaturePlotCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("FairSplines_CurvaturePlot"),
-            "MenuText": "Curvature plot",
-            "ToolTip": "Plot curvature against arc length of the selected edges (one line each).",
+            "MenuText": QT_TRANSLATE_NOOP("FairSplines_CurvaturePlot", "Curvature plot"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                "FairSplines_CurvaturePlot", "Plot curvature against arc length of the selected edges, one line each."
+            ),
         }
 
     def IsActive(self):
@@ -128,26 +138,29 @@ class CombTaskPanel:
     Cancel restores the values the panel opened with."""
 
     def __init__(self):
-        from PySide2 import QtWidgets
+        from PySide2 import QtGui, QtWidgets
 
         global _panel
         _panel = self
         self.initial = comb.get_style()
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle("Curvature comb")
+        self.form.setWindowTitle(translate("FairSplines", "Curvature comb"))
+        self.form.setWindowIcon(QtGui.QIcon(icon_path("FairSplines_CurvatureComb")))
         layout = QtWidgets.QFormLayout(self.form)
         self.scale = QtWidgets.QDoubleSpinBox()
         self.scale.setRange(-1000.0, 1000.0)
         self.scale.setDecimals(3)
         self.scale.setSingleStep(0.1)
         self.scale.setValue(self.initial[0])
-        self.scale.setToolTip("1 makes the longest tooth a quarter of the curve's size; negative flips the side")
+        self.scale.setToolTip(
+            translate("FairSplines", "1 makes the longest tooth a quarter of the curve's size; negative flips the side")
+        )
         self.samples = QtWidgets.QSpinBox()
         self.samples.setRange(8, 100000)
         self.samples.setValue(self.initial[1])
-        self.samples.setToolTip("Teeth per edge (at least)")
-        layout.addRow("Scale", self.scale)
-        layout.addRow("Teeth", self.samples)
+        self.samples.setToolTip(translate("FairSplines", "Teeth per edge (at least)"))
+        layout.addRow(translate("FairSplines", "Scale"), self.scale)
+        layout.addRow(translate("FairSplines", "Teeth"), self.samples)
         self.scale.valueChanged.connect(self.apply)
         self.samples.valueChanged.connect(self.apply)
 
