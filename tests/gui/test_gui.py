@@ -372,3 +372,43 @@ def test_screenshot_of_the_3d_view_shows_curve_and_comb(scene, artifacts):
     image = np.asarray(Image.open(path.replace(".png", "_off.png")).convert("RGB"))
     assert _pixels_near(image, tuple(int(255 * c) for c in comb.TOOTH_COLOR)) == 0
     assert _pixels_near(image, (217, 25, 25)) > 500
+
+
+def test_saved_fit_reopens_in_the_gui_with_its_view_provider(scene, tmp_path):
+    import FreeCADGui
+
+    from freecad_workbench.gui.view_providers import ViewProviderCsrFit
+
+    doc, objs = scene
+    fit = fit_of(doc, objs)
+    expected = poles(fit)
+    path = str(tmp_path / "gui_fit.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    assert reopened is not doc
+    try:
+        fit = reopened.getObject("CsrFit")
+        assert isinstance(fit.ViewObject.Proxy, ViewProviderCsrFit)
+        assert fit.ViewObject.Proxy.getIcon() == icon_path("FairSplines_CsrFit")
+        fit.touch()
+        reopened.recompute()
+        np.testing.assert_array_equal(poles(fit), expected)
+        assert FreeCADGui.getDocument(reopened.Name).getObject("CsrFit").Visibility
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_closing_a_document_drops_its_combs(scene):
+    doc, objs = scene
+    other = FreeCAD.newDocument("CombDoc")
+    name = other.Name
+    try:
+        curve = other.addObject("Part::Feature", "Curve")
+        curve.Shape = fw.csr_spline(DATA).toShape()
+        other.recompute()
+        comb.show(curve, "Edge1")
+        assert (other.Name, "Curve", "Edge1") in comb.shown()
+    finally:
+        FreeCAD.closeDocument(name)
+    assert all(key[0] != name for key in comb.shown())
