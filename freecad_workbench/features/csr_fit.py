@@ -93,22 +93,16 @@ class CsrFit:
 def ensure_properties(obj):
     """Add any missing property with its default; keep the values of existing ones."""
     for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name == "Parametrization" and name in obj.PropertiesList:
-            if list(obj.getEnumerationsOfProperty(name)) != list(PARAMETRIZATIONS):
-                value = obj.Parametrization
+        if name not in obj.PropertiesList:
+            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name == "Status" else 0)
+            if name == "Parametrization":
                 obj.Parametrization = list(PARAMETRIZATIONS)
-                obj.Parametrization = value if value in PARAMETRIZATIONS else "chordal"
-            obj.setEditorMode(name, mode)
-            continue
-        if name in obj.PropertiesList:
-            obj.setEditorMode(name, mode)
-            continue
-        attr = _OUTPUT if name == "Status" else 0
-        obj.addProperty(type_, name, _GROUP, tooltip, attr)
-        if name == "Parametrization":
+            if default is not None:
+                setattr(obj, name, default)
+        elif name == "Parametrization" and list(obj.getEnumerationsOfProperty(name)) != list(PARAMETRIZATIONS):
+            value = obj.Parametrization
             obj.Parametrization = list(PARAMETRIZATIONS)
-        if default is not None:
-            setattr(obj, name, default)
+            obj.Parametrization = value if value in PARAMETRIZATIONS else "chordal"
         obj.setEditorMode(name, mode)
 
 

@@ -37,6 +37,7 @@ def test_fit_of_vertices_is_the_csr_spline_of_their_points(doc):
     assert fit.Shape.isValid() and len(fit.Shape.Edges) == 1
     np.testing.assert_array_equal(poles(fit), poles(fw.csr_spline(DATA)))
     assert fit.Shape.Edges[0].Curve.Continuity == "C2"
+    assert fit.getEditorMode("Status") == ["ReadOnly"] and fit.getEditorMode("Version") == ["Hidden"]
 
 
 def test_sources_keep_their_order_across_objects(doc):
@@ -247,7 +248,7 @@ def test_bad_input_puts_the_feature_in_error_state_and_keeps_last_good_shape(doc
     assert message in fit.Status, fit.Status
     assert fit.Status != "ok"
     np.testing.assert_array_equal(poles(fit), good)  # last good shape kept
-    assert fit.isValid() and "Invalid" not in fit.State
+    assert fit.isValid() and "Invalid" not in fit.State and "Touched" not in fit.State
     assert box.Shape.BoundBox.XLength == pytest.approx(42)  # the rest of the document recomputed
 
     fit.Sources = [(o, "") for o in vertices(doc)]  # good data again
