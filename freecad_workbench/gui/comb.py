@@ -27,7 +27,8 @@ Comb.__doc__ = "Comb teeth: base points (n,3) on the curve, tips (n,3), curvatur
 PARAM_PATH = "User parameter:BaseApp/Preferences/Mod/FairSplines"
 DEFAULT_SCALE = 1.0
 DEFAULT_SAMPLES = 256
-# With scale factor 1 the longest tooth is this fraction of the bounding-box diagonal.
+# With scale factor 1 the longest tooth is this fraction of the diagonal of the box
+# around the sampled curve points.
 AUTO_LENGTH = 0.25
 
 TOOTH_COLOR = (0.35, 0.55, 1.0)
