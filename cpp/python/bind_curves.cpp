@@ -41,7 +41,7 @@ void bindCurves(py::module_& m) {
 
   m.def(
       "csr_spline",
-      [](const PointMatrix& q, bool closed, const std::string& parametrization, double epsilon, EpsilonRule rule,
+      [](PointsRef q, bool closed, const std::string& parametrization, double epsilon, EpsilonRule rule,
          const Eigen::VectorXd& t) {
         return csrSpline(q, CsrOptions{parseParametrization(parametrization), closed, epsilon, rule, t});
       },
@@ -49,27 +49,27 @@ void bindCurves(py::module_& m) {
       "rule"_a = EpsilonRule::CaseDistinction, "parameters"_a = Eigen::VectorXd(), "csr-spline, Section 4, eq. (6).");
   m.def(
       "quadratic_design",
-      [](const PointMatrix& q, bool closed, const std::string& parametrization, double epsilon) {
+      [](PointsRef q, bool closed, const std::string& parametrization, double epsilon) {
         return quadraticDesign(q, parseParametrization(parametrization), closed, epsilon);
       },
       "points"_a, "closed"_a = false, "parametrization"_a = "chordal", "epsilon"_a = 1e-9,
       "Quadratic design, Section 7, eq. (12).");
   m.def(
       "quasi_interpolant",
-      [](const PointMatrix& q, bool closed, const std::string& parametrization) {
+      [](PointsRef q, bool closed, const std::string& parametrization) {
         return quasiInterpolant(q, parseParametrization(parametrization), closed);
       },
       "points"_a, "closed"_a = false, "parametrization"_a = "chordal");
   m.def("control_point_spline", &controlPointSpline, "points"_a, "closed"_a = false);
   m.def(
       "classic_interpolation",
-      [](const PointMatrix& q, bool closed, const std::string& parametrization) {
+      [](PointsRef q, bool closed, const std::string& parametrization) {
         return fromOcct(classicInterpolation(q, parseParametrization(parametrization), closed));
       },
       "points"_a, "closed"_a = false, "parametrization"_a = "chordal",
       "Classic C2 cubic interpolation by OCCT's GeomAPI_Interpolate.");
 
-  m.def("parameters", [](const PointMatrix& q, const std::string& kind, bool closed) {
+  m.def("parameters", [](PointsRef q, const std::string& kind, bool closed) {
     validateSamples(q, closed, 2, "parametrization");
     return parameters(q, parseParametrization(kind), closed);
   }, "points"_a, "parametrization"_a = "chordal", "closed"_a = false);
@@ -113,7 +113,7 @@ void bindCurves(py::module_& m) {
       "curve"_a, "n"_a = 2048, "min_per_span"_a = 16, "[(u, s, kappa, is_maximum)]");
   m.def(
       "max_distance",
-      [](const BSplineCurve& curve, const PointMatrix& q) { return maxDistanceToPoints(toOcct(curve), q); },
+      [](const BSplineCurve& curve, PointsRef q) { return maxDistanceToPoints(toOcct(curve), q); },
       "curve"_a, "points"_a);
   m.def(
       "edge_address",

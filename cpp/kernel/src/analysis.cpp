@@ -164,7 +164,7 @@ std::vector<CurvatureExtremum> curvatureExtrema(const CurvatureProfile& profile)
   return out;
 }
 
-double maxDistanceToPoints(const Handle(Geom_BSplineCurve)& curve, const PointMatrix& q) {
+double maxDistanceToPoints(const Handle(Geom_BSplineCurve)& curve, PointsRef q) {
   // Every span gets a box from 9 samples, padded by a quarter of its diagonal (ample for
   // a cubic span); only spans whose box is nearer than the best distance so far are
   // searched.

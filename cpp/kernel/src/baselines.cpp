@@ -11,7 +11,7 @@
 
 namespace fairsplines {
 
-Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametrization parametrization, bool closed) {
+Handle(Geom_BSplineCurve) classicInterpolation(PointsRef q, Parametrization parametrization, bool closed) {
   const Eigen::VectorXd t = parameters(validateSamples(q, closed, closed ? 3 : 2, "classic interpolation").chords,
                                        parametrization);
   const int n = static_cast<int>(q.rows());
@@ -31,13 +31,13 @@ Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametriza
   }
 }
 
-BSplineCurve quasiInterpolant(const PointMatrix& q, Parametrization parametrization, bool closed) {
+BSplineCurve quasiInterpolant(PointsRef q, Parametrization parametrization, bool closed) {
   const SampleInfo info = validateSamples(q, closed, 3, "the quasi-interpolant");
   const Eigen::VectorXd t = parameters(info.chords, parametrization);
   return detail::fitCubic(q, t, closed, info.size, 1e-9, EpsilonRule::CaseDistinction, true);
 }
 
-BSplineCurve controlPointSpline(const PointMatrix& q, bool closed) {
+BSplineCurve controlPointSpline(PointsRef q, bool closed) {
   validateSamples(q, closed, closed ? 3 : 4, "the control-point spline");
   const Eigen::Index n = q.rows();
   if (closed) {

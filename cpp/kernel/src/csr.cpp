@@ -48,7 +48,7 @@ struct Quadratic {
 };
 
 template <int D>
-Vec<D> row(const PointMatrix& q, Eigen::Index i) {
+Vec<D> row(PointsRef q, Eigen::Index i) {
   return q.row(i).transpose().template head<D>();
 }
 
@@ -75,7 +75,7 @@ struct Weight {
 };
 
 template <int D>
-void csrPoles(const PointMatrix& q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
+void csrPoles(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
               PointMatrix& out) {
   // One streaming pass over the samples with a window of three quadratics
   // f_{i-1}, f_i, f_{i+1}; each first divided difference, curvature and mu is computed
@@ -163,7 +163,7 @@ void csrPoles(const PointMatrix& q, const Eigen::VectorXd& h, bool closed, const
 
 }  // namespace
 
-BSplineCurve fitCubic(const PointMatrix& q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
+BSplineCurve fitCubic(PointsRef q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
                       EpsilonRule rule, bool quasiOnly) {
   const Weight weight{epsilon / size, rule};
   const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
@@ -174,7 +174,7 @@ BSplineCurve fitCubic(const PointMatrix& q, const Eigen::VectorXd& t, bool close
 }
 
 template <int D>
-PointMatrix quadraticHandles(const PointMatrix& q, const Eigen::VectorXd& t, bool closed, const Weight& weight) {
+PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed, const Weight& weight) {
   const Eigen::Index n = q.rows();
   const Eigen::Index segments = closed ? n : n - 1;
   Eigen::VectorXd h(segments);
@@ -208,7 +208,7 @@ PointMatrix quadraticHandles(const PointMatrix& q, const Eigen::VectorXd& t, boo
 
 }  // namespace detail
 
-BSplineCurve csrSpline(const PointMatrix& q, const CsrOptions& options) {
+BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
   const SampleInfo info = validateSamples(q, options.closed, 3, "the csr-spline");
   const Eigen::VectorXd t = options.parameters.size() > 0
                                 ? validatedParameters(options.parameters, q.rows(), options.closed)
@@ -217,7 +217,7 @@ BSplineCurve csrSpline(const PointMatrix& q, const CsrOptions& options) {
   return detail::fitCubic(q, t, options.closed, info.size, options.epsilon, options.rule, false);
 }
 
-BSplineCurve quadraticDesign(const PointMatrix& q, Parametrization parametrization, bool closed, double epsilon) {
+BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {
   const SampleInfo info = validateSamples(q, closed, 3, "the quadratic design");
   if (!(epsilon > 0.0)) throw InputError("epsilon must be positive");
   const Eigen::VectorXd t = parameters(info.chords, parametrization);

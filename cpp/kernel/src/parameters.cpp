@@ -14,7 +14,7 @@ Parametrization parseParametrization(const std::string& name) {
   throw InputError("unknown parametrization '" + name + "': use 'chordal', 'centripetal' or 'uniform'");
 }
 
-SampleInfo validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method) {
+SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
     std::ostringstream msg;
@@ -78,7 +78,7 @@ Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) 
   return t;
 }
 
-Eigen::VectorXd parameters(const PointMatrix& q, Parametrization kind, bool closed) {
+Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed) {
   const Eigen::Index n = q.rows(), segments = closed ? n : n - 1;
   Eigen::VectorXd chords(segments);
   for (Eigen::Index i = 0; i < segments; ++i) chords[i] = (q.row(i + 1 == n ? 0 : i + 1) - q.row(i)).norm();

@@ -48,6 +48,6 @@ std::vector<CurvatureExtremum> curvatureExtrema(const CurvatureProfile& profile)
 
 /// Largest distance from the points to the curve (rows of q, 2 or 3 columns),
 /// by projection (sampling followed by Newton refinement).
-double maxDistanceToPoints(const Handle(Geom_BSplineCurve)& curve, const PointMatrix& q);
+double maxDistanceToPoints(const Handle(Geom_BSplineCurve)& curve, PointsRef q);
 
 }  // namespace fairsplines

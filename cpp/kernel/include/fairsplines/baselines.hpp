@@ -8,14 +8,14 @@ namespace fairsplines {
 
 /// Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate) at the same parameters
 /// as the other constructions. Needs at least 2 samples (3 when closed).
-Handle(Geom_BSplineCurve) classicInterpolation(const PointMatrix& q, Parametrization parametrization, bool closed);
+Handle(Geom_BSplineCurve) classicInterpolation(PointsRef q, Parametrization parametrization, bool closed);
 
 /// The cubic quasi-interpolant: c_i := p_i, the blossom of f_i at (t_{i-1}, t_i, t_{i+1}),
 /// i.e. (-1, 8, -1)/6 for uniform parameters. Same knots and ends as csrSpline.
-BSplineCurve quasiInterpolant(const PointMatrix& q, Parametrization parametrization, bool closed);
+BSplineCurve quasiInterpolant(PointsRef q, Parametrization parametrization, bool closed);
 
 /// The "data as control points" cubic B-spline, uniform knots, clamped when open,
 /// periodic when closed. Needs at least 4 samples (3 when closed).
-BSplineCurve controlPointSpline(const PointMatrix& q, bool closed);
+BSplineCurve controlPointSpline(PointsRef q, bool closed);
 
 }  // namespace fairsplines

@@ -35,14 +35,14 @@ struct CsrOptions {
 /// (mirrored at the other end). It is C2 throughout, reproduces quadratic data exactly
 /// and adds no turn at the ends that f_1 / f_{n-2} do not have.
 /// Closed data give a periodic curve. Needs at least 3 samples.
-BSplineCurve csrSpline(const PointMatrix& q, const CsrOptions& options = {});
+BSplineCurve csrSpline(PointsRef q, const CsrOptions& options = {});
 
 /// Quadratic design of eq. (12): sparse samples to the quadratic Bézier pieces
 /// {q_i, m_i, q_{i+1}} with shape handles m_i = mu_{i+1} m_i^L + (1 - mu_{i+1}) m_i^R.
 /// Returned as a degree-2 B-spline with double interior knots at t_i (poles q_0, m_0,
 /// q_1, m_1, ..., q_{n-1}); at the ends of open data the one available handle is used.
 /// Needs at least 3 samples.
-BSplineCurve quadraticDesign(const PointMatrix& q, Parametrization parametrization = Parametrization::Chordal,
+BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization = Parametrization::Chordal,
                              bool closed = false, double epsilon = 1e-9);
 
 }  // namespace fairsplines

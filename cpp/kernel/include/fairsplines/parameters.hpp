@@ -19,14 +19,14 @@ struct SampleInfo {
 /// Checks samples for the spline constructions: at least `minPoints` rows, 2 or 3
 /// columns, finite values, not all coincident, no two consecutive (cyclically
 /// consecutive when `closed`) coincident. Throws InputError naming the problem.
-SampleInfo validateSamples(const PointMatrix& q, bool closed, int minPoints, const char* method);
+SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method);
 
 /// Parameters from chord lengths: t_0 = 0 and t_{i+1} - t_i = chord_i^a with a = 1
 /// (chordal), 1/2 (centripetal) or 0 (uniform). Size: one more than the chords.
 Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind);
 
 /// Parameters for samples (n values, n + 1 for closed data: t_n closes the loop).
-Eigen::VectorXd parameters(const PointMatrix& q, Parametrization kind, bool closed);
+Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed);
 
 /// Checks user-given parameters: n values (n + 1 when closed), finite, strictly
 /// increasing. Returns them; throws InputError naming the first bad one.
