@@ -19,6 +19,8 @@ from .curves import (  # noqa: E402
     control_point_spline,
     quadratic_design,
 )
+from . import basic  # noqa: E402
+from .design import ApproximationError, DesignResult, approximation_error, design_spline, revolve_profile  # noqa: E402
 from .analysis import (  # noqa: E402
     CurvatureProfile,
     curvature_profile,
@@ -34,6 +36,12 @@ __all__ = [
     "quasi_interpolant",
     "control_point_spline",
     "quadratic_design",
+    "basic",
+    "design_spline",
+    "DesignResult",
+    "revolve_profile",
+    "approximation_error",
+    "ApproximationError",
     "CurvatureProfile",
     "curvature_profile",
     "curvature_sign_changes",

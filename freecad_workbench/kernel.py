@@ -67,6 +67,24 @@ def to_part_arrays(curve):
     return result
 
 
+def surface_to_part(surface):
+    """Exact hand-over of a kernel BSplineSurface to a Part.BSplineSurface."""
+    import Part
+
+    if _BRIDGE is not None:
+        shape = Part.__fromPythonOCC__(_BRIDGE.adopt_shape(_kernel.face_address(surface)))
+        return shape.Face1.Surface
+    poles = surface.poles.reshape(surface.nu, surface.nv, 3)
+    result = Part.BSplineSurface()
+    weights = surface.weights.reshape(surface.nu, surface.nv) if surface.weights.size else None
+    args = [poles.tolist(), surface.mults_u.tolist(), surface.mults_v.tolist(), surface.knots_u.tolist(),
+            surface.knots_v.tolist(), False, False, surface.degree_u, surface.degree_v]
+    if weights is not None:
+        args.append(weights.tolist())
+    result.buildFromPolesMultsKnots(*args)
+    return result
+
+
 def _load_bridge():
     try:
         from . import occ_bridge

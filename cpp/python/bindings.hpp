@@ -3,4 +3,5 @@
 
 namespace fairsplines::python {
 void bindCurves(pybind11::module_& m);
+void bindDesign(pybind11::module_& m);
 }

@@ -1,0 +1,304 @@
+"""Basic curves for design with basic curves (csr paper, Sections 3.2, 5 and 6).
+
+Every basic curve is parameterised over u in [0, 1] and offers ``value(u)``,
+``d1(u)``, ``d2(u)`` (FreeCAD Vectors), ``parameter_of(point)`` (eq. (4) for circle arcs,
+eq. (5) for the others) and ``to_part()`` (FreeCAD geometry: the native conic arc where
+FreeCAD has one, else a B-spline). Conics and rational cubics are converted exactly
+(Section 6); spirals, involutes and user curves are approximated (Section 5).
+
+    import freecad_workbench as fw
+    arc = fw.basic.CircleArc(center=(0, 0, 0), radius=1, start_angle=0, end_angle=math.pi)
+    arc.parameter_of(arc.value(0.3))   # 0.3
+"""
+import math
+
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+from .kernel import to_part
+
+__all__ = [
+    "BasicCurve",
+    "LineSegment",
+    "CircleArc",
+    "EllipseArc",
+    "ParabolaArc",
+    "HyperbolaArc",
+    "RationalCubic",
+    "ArchimedeanSpiral",
+    "CircleInvolute",
+    "ParametricCurve",
+    "from_edge",
+]
+
+
+def _vector3(value, name):
+    if hasattr(value, "x") and hasattr(value, "y") and hasattr(value, "z"):
+        value = (value.x, value.y, value.z)
+    try:
+        v = np.array([float(c) for c in value], dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a point or vector, got {value!r}") from None
+    if v.shape == (2,):
+        v = np.r_[v, 0.0]
+    if v.shape != (3,) or not np.all(np.isfinite(v)):
+        raise InputError(f"{name} must be 2 or 3 finite numbers, got {value!r}")
+    return v
+
+
+def _frame(normal, x_axis):
+    """Orthonormal (x, y) spanning the plane with the given normal; x is x_axis projected
+    into the plane, or a fixed choice when x_axis is None."""
+    n = _vector3(normal, "normal")
+    if np.linalg.norm(n) < 1e-300:
+        raise InputError("the normal must not be zero")
+    n = n / np.linalg.norm(n)
+    if x_axis is None:
+        x_axis = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+    x = _vector3(x_axis, "x_axis")
+    x = x - n * np.dot(x, n)
+    if np.linalg.norm(x) < 1e-12:
+        raise InputError("the x axis must not be parallel to the normal")
+    x = x / np.linalg.norm(x)
+    return x, np.cross(n, x)
+
+
+class BasicCurve:
+    """Base of the basic curves: a kernel curve over u in [0, 1]."""
+
+    exact = True  # Section 6 applies (rational of degree <= 3)
+
+    def __init__(self, kernel_curve):
+        self._curve = kernel_curve
+
+    def value(self, u):
+        import FreeCAD
+
+        return FreeCAD.Vector(*self._curve.value(float(u)))
+
+    def d1(self, u):
+        import FreeCAD
+
+        return FreeCAD.Vector(*self._curve.d1(float(u)))
+
+    def d2(self, u):
+        import FreeCAD
+
+        return FreeCAD.Vector(*self._curve.d2(float(u)))
+
+    def parameter_of(self, point, tolerance=1e-9):
+        """u of a point on the curve; InputError if it is farther than tolerance x size."""
+        return self._curve.parameter_of(_vector3(point, "point"), float(tolerance))
+
+    def size(self):
+        return self._curve.size()
+
+    def to_part(self):
+        """FreeCAD geometry of the curve: an exact rational B-spline (subclasses with a
+        native FreeCAD type return that instead)."""
+        curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, np.zeros(0))], 0.0)
+        return to_part(curve)
+
+    def __repr__(self):
+        return f"<{type(self).__name__} from {tuple(self.value(0))} to {tuple(self.value(1))}>"
+
+
+class LineSegment(BasicCurve):
+    def __init__(self, start, end):
+        self.start, self.end = _vector3(start, "start"), _vector3(end, "end")
+        super().__init__(_kernel.line_segment(self.start, self.end))
+
+    def to_part(self):
+        import FreeCAD
+        import Part
+
+        return Part.LineSegment(FreeCAD.Vector(*self.start), FreeCAD.Vector(*self.end))
+
+
+class CircleArc(BasicCurve):
+    """Circle arc from start_angle to end_angle (radians, counter-clockwise about the
+    normal when end > start, clockwise when end < start); angles from x_axis."""
+
+    def __init__(self, center=(0, 0, 0), radius=1.0, start_angle=0.0, end_angle=math.pi / 2, normal=(0, 0, 1),
+                 x_axis=None):
+        self.center = _vector3(center, "center")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.radius, self.start_angle, self.end_angle = float(radius), float(start_angle), float(end_angle)
+        super().__init__(
+            _kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
+                              self.end_angle - self.start_angle)
+        )
+
+    def to_part(self):
+        import FreeCAD
+        import Part
+
+        a0, a1 = sorted((self.start_angle, self.end_angle))
+        normal = np.cross(self.x_axis, self.y_axis)
+        circle = Part.Circle(FreeCAD.Vector(*self.center), FreeCAD.Vector(*normal), self.radius)
+        # Align FreeCAD's x axis with ours so the angles mean the same.
+        circle.XAxis = FreeCAD.Vector(*self.x_axis)
+        arc = Part.ArcOfCircle(circle, a0, a1)
+        return arc if self.end_angle > self.start_angle else _reversed(arc)
+
+
+class EllipseArc(BasicCurve):
+    """Ellipse arc x = a cos t, y = b sin t in the frame (x_axis = major axis), t from
+    start to end."""
+
+    def __init__(self, center=(0, 0, 0), major_radius=2.0, minor_radius=1.0, start=0.0, end=math.pi / 2,
+                 normal=(0, 0, 1), x_axis=None):
+        self.center = _vector3(center, "center")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.a, self.b, self.start, self.end = float(major_radius), float(minor_radius), float(start), float(end)
+        super().__init__(_kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
+                                             self.end - self.start))
+
+
+class ParabolaArc(BasicCurve):
+    """Parabola arc x = t^2 / (4 focal), y = t (FreeCAD's convention), t in [t0, t1];
+    vertex at `vertex`, x_axis along the axis of symmetry."""
+
+    def __init__(self, vertex=(0, 0, 0), focal=1.0, t0=-1.0, t1=1.0, normal=(0, 0, 1), x_axis=None):
+        self.vertex = _vector3(vertex, "vertex")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.focal, self.t0, self.t1 = float(focal), float(t0), float(t1)
+        super().__init__(_kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
+
+
+class HyperbolaArc(BasicCurve):
+    """Hyperbola arc x = a cosh t, y = b sinh t, t in [t0, t1]."""
+
+    def __init__(self, center=(0, 0, 0), major_radius=1.0, minor_radius=1.0, t0=-1.0, t1=1.0, normal=(0, 0, 1),
+                 x_axis=None):
+        self.center = _vector3(center, "center")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.a, self.b, self.t0, self.t1 = float(major_radius), float(minor_radius), float(t0), float(t1)
+        super().__init__(_kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
+
+
+class RationalCubic(BasicCurve):
+    """Rational Bézier curve of degree <= 3 from homogeneous control points (rows
+    (w x, w y, w z, w)), or from poles and weights."""
+
+    def __init__(self, poles=None, weights=None, homogeneous=None):
+        if homogeneous is None:
+            if poles is None:
+                raise InputError("give poles (and weights) or homogeneous control points")
+            p = np.array([_vector3(q, f"pole {i}") for i, q in enumerate(poles)])
+            w = np.ones(len(p)) if weights is None else np.asarray(weights, dtype=float)
+            if w.shape != (len(p),):
+                raise InputError(f"expected {len(p)} weights, got {np.shape(w)}")
+            homogeneous = np.c_[p * w[:, None], w]
+        h = np.ascontiguousarray(homogeneous, dtype=float)
+        if h.ndim != 2 or h.shape[1] != 4 or not 2 <= h.shape[0] <= 4:
+            raise InputError(f"homogeneous control points must be 2 to 4 rows of 4 numbers, got shape {h.shape}")
+        self.homogeneous = h
+        super().__init__(_kernel.RationalBezierCurve(h))
+
+
+class _Transcendental(BasicCurve):
+    exact = False  # Section 5 applies
+
+    def to_part(self, tolerance=1e-9):
+        """A cubic C2 B-spline within tolerance x size of the curve (Section 5 with marks
+        doubled until the deviation at sampled parameters is below it)."""
+        size = self.size()
+        for m in (16, 32, 64, 128, 256, 512, 1024):
+            marks = np.arange(1, m) / m
+            curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, marks)], 0.0)
+            part = to_part(curve)
+            u = np.linspace(0, 1, 8 * m + 1)
+            error = max((part.value(x) - self.value(x)).Length for x in u)
+            if error <= tolerance * size:
+                break
+        return part
+
+
+class ArchimedeanSpiral(_Transcendental):
+    """Archimedean spiral r = a + b theta, theta in [theta0, theta1]."""
+
+    def __init__(self, center=(0, 0, 0), a=0.0, b=1.0 / (2 * math.pi), theta0=math.pi / 2, theta1=2 * math.pi,
+                 normal=(0, 0, 1), x_axis=None):
+        self.center = _vector3(center, "center")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.a, self.b, self.theta0, self.theta1 = float(a), float(b), float(theta0), float(theta1)
+        super().__init__(
+            _kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
+        )
+
+
+class CircleInvolute(_Transcendental):
+    """Involute of the circle of radius r: r (cos t + t sin t, sin t - t cos t), t in [t0, t1]."""
+
+    def __init__(self, center=(0, 0, 0), radius=1.0, t0=0.0, t1=math.pi, normal=(0, 0, 1), x_axis=None):
+        self.center = _vector3(center, "center")
+        self.x_axis, self.y_axis = _frame(normal, x_axis)
+        self.radius, self.t0, self.t1 = float(radius), float(t0), float(t1)
+        super().__init__(
+            _kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
+        )
+
+
+class ParametricCurve(_Transcendental):
+    """A curve given by a Python function f(s) -> point, s in [s0, s1]. Derivatives are
+    taken from `derivative` / `second_derivative` when given, else by central differences.
+    It goes through the Section 5 route."""
+
+    def __init__(self, function, s0=0.0, s1=1.0, derivative=None, second_derivative=None):
+        if not callable(function):
+            raise InputError("a parametric curve needs a function f(s) -> point")
+        self.function, self.s0, self.s1 = function, float(s0), float(s1)
+        step = 1e-4 * (self.s1 - self.s0) if self.s1 > self.s0 else 1e-4
+
+        def f(s):
+            return _vector3(function(s), "f(s)")
+
+        def df(s):
+            if derivative is not None:
+                return _vector3(derivative(s), "f'(s)")
+            return (f(s + step) - f(s - step)) / (2 * step)
+
+        def d2f(s):
+            if second_derivative is not None:
+                return _vector3(second_derivative(s), "f''(s)")
+            return (f(s + step) - 2 * f(s) + f(s - step)) / (step * step)
+
+        super().__init__(_kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
+
+
+def _reversed(geometry):
+    """A B-spline of the geometry with the direction reversed."""
+    b = geometry.toBSpline()
+    b.reverse()
+    return b
+
+
+def from_edge(edge):
+    """The basic curve of a FreeCAD edge (Part or Sketcher): lines, circles, ellipses,
+    parabolas, hyperbolas and their arcs, over the edge's parameter range."""
+    import Part
+
+    if not isinstance(edge, Part.Edge):
+        if isinstance(edge, Part.Shape) and len(edge.Edges) == 1:
+            edge = edge.Edges[0]
+        elif hasattr(edge, "toShape"):
+            edge = edge.toShape()
+        else:
+            raise InputError(f"not an edge: {type(edge).__name__}")
+    curve, t0, t1 = edge.Curve, edge.FirstParameter, edge.LastParameter
+    if isinstance(curve, (Part.Line, Part.LineSegment)):
+        return LineSegment(edge.valueAt(t0), edge.valueAt(t1))
+    if isinstance(curve, Part.BSplineCurve) or isinstance(curve, Part.BezierCurve):
+        raise InputError("a B-spline or Bézier edge is not a basic curve: use it as data for the csr fit")
+    normal, x_axis = getattr(curve, "Axis", None), getattr(curve, "XAxis", None)
+    if isinstance(curve, Part.Circle):
+        return CircleArc(curve.Center, curve.Radius, t0, t1, normal, x_axis)
+    if isinstance(curve, Part.Ellipse):
+        return EllipseArc(curve.Center, curve.MajorRadius, curve.MinorRadius, t0, t1, normal, x_axis)
+    if isinstance(curve, Part.Parabola):
+        return ParabolaArc(curve.Location, curve.Focal, t0, t1, normal, x_axis)
+    if isinstance(curve, Part.Hyperbola):
+        return HyperbolaArc(curve.Center, curve.MajorRadius, curve.MinorRadius, t0, t1, normal, x_axis)
+    raise InputError(f"{type(curve).__name__} edges are not basic curves (lines and conics are)")

@@ -1,0 +1,134 @@
+"""Design with basic curves (csr paper, Sections 5, 6 and Fig. 9): basic curve pieces
+with marks to one non-uniform cubic C2 NURBS that keeps the pieces exact between the
+marks, rounds off the transitions, and whose control polygon can be edited freely."""
+from collections import namedtuple
+import numbers
+
+import numpy as np
+
+from . import _kernel
+from .basic import BasicCurve, from_edge
+from .errors import InputError
+from .kernel import from_part, to_part
+
+DesignResult = namedtuple("DesignResult", "curve joins ranges marks marks_added")
+DesignResult.__doc__ = (
+    "design_spline(..., details=True): the Part.BSplineCurve; per join 'agree', 'averaged' or 'edge'; "
+    "per piece (t0, scale) with the piece's u at the curve's t0 + scale * u; per piece the marks used "
+    "(u_0 = 0 .. u_m = 1) and how many were added to keep the weights positive."
+)
+
+
+def piece_marks(curve, marks, tolerance=1e-9):
+    """Marks as parameters in [0, 1]: numbers are taken as they are, points are located on
+    the curve by eq. (4) / eq. (5) (InputError if off the curve beyond tolerance)."""
+    u = []
+    for i, mark in enumerate(marks):
+        if isinstance(mark, numbers.Real):
+            u.append(float(mark))
+        else:
+            try:
+                u.append(curve.parameter_of(mark, tolerance))
+            except InputError as exc:
+                raise InputError(f"mark {i}: {exc}") from None
+    return np.array(u, dtype=float)
+
+
+def _piece(item, index):
+    try:
+        curve, marks = item
+    except (TypeError, ValueError):
+        raise InputError(f"piece {index} must be a pair (basic curve, marks)") from None
+    if not isinstance(curve, BasicCurve):
+        curve = from_edge(curve)
+    return curve, marks
+
+
+def design_spline(pieces, join_tolerance=1e-6, details=False):
+    """One cubic C2 NURBS from basic curve pieces with marks.
+
+    pieces: list of (basic_curve, marks); basic_curve is a fw.basic curve or a FreeCAD
+        edge (lines and conics); marks are parameters in [0, 1] or points on the curve.
+    join_tolerance: end points of consecutive pieces closer than this (model units) are
+        averaged into one control point; farther apart they are joined by an edge; equal
+        end points are shared.
+    Rational curves of degree <= 3 (conics) are kept exact from their second mark to the
+    second last (to their free end at the ends of the design); spirals and other curves
+    are approximated (Section 5). Raises InputError on bad input.
+    """
+    if isinstance(pieces, tuple) and len(pieces) == 2 and not isinstance(pieces[0], tuple):
+        pieces = [pieces]
+    pieces = list(pieces)
+    if not pieces:
+        raise InputError("a design needs at least one piece")
+    if not join_tolerance >= 0:
+        raise InputError("join_tolerance must not be negative")
+    polygons = []
+    for index, item in enumerate(pieces):
+        curve, marks = _piece(item, index)
+        try:
+            polygons.append(_kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
+        except InputError as exc:
+            raise InputError(f"piece {index}: {exc}") from None
+    curve, joins, ranges = _kernel.merge_pieces(polygons, float(join_tolerance))
+    part = to_part(curve)
+    if not details:
+        return part
+    return DesignResult(part, joins, ranges, [p.marks for p in polygons], [p.marks_added for p in polygons])
+
+
+def revolve_profile(curve, axis_point=(0, 0, 0), axis_direction=(0, 0, 1)):
+    """The exact surface of revolution of a profile (Part curve or edge, e.g. a designed
+    spline) about an axis: a Part.BSplineSurface, the profile's NURBS in u times a
+    rational circle in v (the paper's profile test)."""
+    from .basic import _vector3
+    from .kernel import surface_to_part
+
+    surface = _kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
+                              _vector3(axis_direction, "axis_direction"))
+    return surface_to_part(surface)
+
+
+ApproximationError = namedtuple("ApproximationError", "quintic_position quintic_curvature cubic_position cubic_curvature")
+ApproximationError.__doc__ = (
+    "Largest deviation from a basic curve, at equal parameters, of the quintics of eq. (7) and of the cubic "
+    "C2 spline (Section 5), in position and in curvature, over [u_2, u_(m-2)] for the spline."
+)
+
+
+def approximation_error(curve, marks, samples=40):
+    """Measure the Section 5 approximation of a basic curve with the given marks."""
+    u = _kernel.complete_marks(piece_marks(curve, marks))
+    m = len(u) - 1
+    quintic = _kernel.quintic_pieces(curve._curve, u)
+    binomial = np.array([1, 5, 10, 10, 5, 1], dtype=float)
+
+    def curvature(d1, d2):
+        return np.linalg.norm(np.cross(d1, d2)) / np.linalg.norm(d1) ** 3
+
+    qp = qk = 0.0
+    for i in range(m):
+        b = quintic[6 * i:6 * i + 6]
+        h = u[i + 1] - u[i]
+        for x in np.linspace(0, 1, samples + 1):
+            basis = binomial * (1 - x) ** (5 - np.arange(6)) * x ** np.arange(6)
+            p = basis @ b
+            # Derivatives of the quintic in u (1/h per order).
+            db = np.diff(b, axis=0)
+            basis4 = np.array([1, 4, 6, 4, 1]) * (1 - x) ** (4 - np.arange(5)) * x ** np.arange(5)
+            ddb = np.diff(b, 2, axis=0)
+            basis3 = np.array([1, 3, 3, 1]) * (1 - x) ** (3 - np.arange(4)) * x ** np.arange(4)
+            d1 = 5 * (basis4 @ db) / h
+            d2 = 20 * (basis3 @ ddb) / h**2
+            uu = u[i] + x * h
+            qp = max(qp, np.linalg.norm(p - curve._curve.value(uu)))
+            qk = max(qk, abs(curvature(d1, d2) - curvature(curve._curve.d1(uu), curve._curve.d2(uu))))
+    spline, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(curve._curve, u)], 0.0)
+    part = to_part(spline)
+    cp = ck = 0.0
+    lo, hi = (u[2], u[m - 2]) if m >= 4 else (0.0, 1.0)
+    for uu in np.linspace(lo, hi, samples * m + 1):
+        v = part.value(uu)
+        cp = max(cp, np.linalg.norm(np.array([v.x, v.y, v.z]) - curve._curve.value(uu)))
+        ck = max(ck, abs(part.curvature(uu) - curvature(curve._curve.d1(uu), curve._curve.d2(uu))))
+    return ApproximationError(qp, qk, cp, ck)
