@@ -349,5 +349,22 @@ TEST(Surfaces, RevolvedDesignedProfileIsExact) {
       EXPECT_NEAR(std::hypot(ring, p.Z()), 1.0, 1e-12 * 3);  // on the torus R = 2, r = 1
     }
   }
-  EXPECT_THROW(revolve(d.curve, {2.5, 0, 0}, {0, 0, 1}), InputError);  // crosses the axis
+  EXPECT_THROW(revolve(d.curve, {0, 0, 0}, {0, 0, 0}), InputError);  // no axis
+  // A space curve revolves exactly too: every pole keeps its distance to the axis.
+  const auto spiral = archimedeanSpiral(kTilted, 0.5, 0.2, 0.0, 4.0);
+  const BSplineSurface twisted = revolve(mergePieces({piecePolygon(*spiral, Eigen::Vector3d(0.3, 0.5, 0.7))}, 0.0).curve,
+                                         {0, 0, 0}, {0, 0, 1});
+  const Handle(Geom_BSplineCurve) profile =
+      toOcct(mergePieces({piecePolygon(*spiral, Eigen::Vector3d(0.3, 0.5, 0.7))}, 0.0).curve);
+  const Handle(Geom_BSplineSurface) ts = toOcct(twisted);
+  ts->Bounds(u0, u1, v0, v1);
+  for (int i = 0; i <= 20; ++i) {
+    const double u = u0 + (u1 - u0) * i / 20;
+    const gp_Pnt p = profile->Value(u);
+    for (int j = 0; j <= 20; ++j) {
+      const gp_Pnt q = ts->Value(u, v0 + (v1 - v0) * j / 20);
+      EXPECT_NEAR(std::hypot(q.X(), q.Y()), std::hypot(p.X(), p.Y()), 1e-12 * 5);
+      EXPECT_NEAR(q.Z(), p.Z(), 1e-12 * 5);
+    }
+  }
 }

@@ -245,7 +245,7 @@ Design mergePieces(const std::vector<PiecePolygon>& pieces, double joinTolerance
     }
     c.poles.row(i) = poles[i].head<3>() / w;
     c.weights[i] = w;
-    rational = rational || w != 1.0;
+    rational = rational || std::abs(w - 1.0) > 1e-13;  // blossoms of a constant weight: 1 up to rounding
   }
   if (!rational) c.weights.resize(0);
   c.knots = Eigen::Map<Eigen::VectorXd>(knots.data(), static_cast<Eigen::Index>(knots.size()));

@@ -45,22 +45,14 @@ BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisP
     p.head(profile.poles.cols()) = profile.poles.row(i).transpose();
     return p;
   };
-  // A common radial direction: from the first pole that is off the axis.
-  Eigen::Vector3d e1 = Eigen::Vector3d::Zero();
-  for (Eigen::Index i = 0; i < nu && e1.norm() == 0.0; ++i) {
+  // Rotation is linear, so each pole turns with its own radial vector d_i: the tensor
+  // product is exact for any profile, planar or not.
+  bool offAxis = false;
+  for (Eigen::Index i = 0; i < nu && !offAxis; ++i) {
     const Eigen::Vector3d d = pole(i) - axisPoint;
-    const Eigen::Vector3d radial = d - d.dot(axis) * axis;
-    if (radial.norm() > 1e-12 * (1.0 + d.norm())) e1 = radial.normalized();
+    offAxis = (d - d.dot(axis) * axis).norm() > 1e-12 * (1.0 + d.norm());
   }
-  if (e1.norm() == 0.0) throw InputError("the profile lies on the axis of revolution");
-  const Eigen::Vector3d e2 = axis.cross(e1);
-  // The profile must lie in one half-plane through the axis (the plane of e1 and axis).
-  for (Eigen::Index i = 0; i < nu; ++i) {
-    const Eigen::Vector3d d = pole(i) - axisPoint;
-    const double scale = 1e-9 * (1.0 + d.norm());
-    if (std::abs(d.dot(e2)) > scale) throw InputError("the profile must lie in a plane through the axis");
-    if (d.dot(e1) < -scale) throw InputError("the profile crosses the axis of revolution");
-  }
+  if (!offAxis) throw InputError("the profile lies on the axis of revolution");
   // Unit circle as four rational quadratic quarter arcs: 9 poles, corners weighted 1/sqrt(2).
   const double s = std::sqrt(0.5);
   const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1};
@@ -75,10 +67,10 @@ BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisP
   surface.weights.resize(nu * 9);
   for (Eigen::Index i = 0; i < nu; ++i) {
     const Eigen::Vector3d d = pole(i) - axisPoint;
-    const double height = d.dot(axis), r = d.dot(e1);
+    const Eigen::Vector3d radial = d - d.dot(axis) * axis, turned = axis.cross(radial);
     const double w = profile.isRational() ? profile.weights[i] : 1.0;
     for (int j = 0; j < 9; ++j) {
-      surface.poles.row(i * 9 + j) = (axisPoint + height * axis + r * (cx[j] * e1 + cy[j] * e2)).transpose();
+      surface.poles.row(i * 9 + j) = (axisPoint + d.dot(axis) * axis + cx[j] * radial + cy[j] * turned).transpose();
       surface.weights[i * 9 + j] = w * cw[j];
     }
   }

@@ -29,7 +29,8 @@ PointMatrix tensorControlNet(const PointMatrix& bezier, int nI, int nJ, const Ei
 
 /// The exact surface of revolution of a profile curve about an axis: the profile's
 /// (rational) B-spline in u, times the rational quadratic circle (four quarter arcs) in v.
-/// Throws InputError for a zero axis direction or a profile that crosses the axis.
+/// Any profile works (each pole turns about the axis). Throws InputError for a zero axis
+/// direction or a profile that lies on the axis.
 BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisPoint, const Eigen::Vector3d& axisDirection);
 
 /// Exact conversion; throws InputError when OCCT rejects the data.
