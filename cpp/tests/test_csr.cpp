@@ -6,6 +6,7 @@
 
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/csr.hpp"
+#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/occt.hpp"
 #include "test_support.hpp"
@@ -158,4 +159,36 @@ TEST(Csr, BadInputThrowsNamedInputError) {
   PointMatrix wide(4, 4);
   wide.setRandom();
   EXPECT_NE(message(wide).find("2 or 3 coordinates"), std::string::npos);
+}
+
+TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int dim : {2, 3}) {
+    for (bool closed : {false, true}) {
+      for (int n : {3, 4, 5, 9, 50}) {
+        PointMatrix q(n, dim);
+        for (int i = 0; i < n; ++i) {
+          const double a = 2 * M_PI * i / n;
+          q(i, 0) = std::cos(a) + 0.2 * unit(rng);
+          q(i, 1) = std::sin(a) + 0.2 * unit(rng);
+          if (dim == 3) q(i, 2) = 0.3 * unit(rng);
+        }
+        const SampleInfo info = validateSamples(q, closed, 3, "test");
+        const Eigen::VectorXd t = parameters(info.chords, Parametrization::Chordal);
+        for (EpsilonRule rule : {EpsilonRule::CaseDistinction, EpsilonRule::Additive}) {
+          for (bool quasi : {false, true}) {
+            const BSplineCurve a = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
+                                                    detail::CsrStrategy::Streaming);
+            const BSplineCurve b = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
+                                                    detail::CsrStrategy::Vectorised);
+            ASSERT_EQ(a.poles.rows(), b.poles.rows());
+            EXPECT_LT((a.poles - b.poles).cwiseAbs().maxCoeff(), 1e-14) << dim << closed << n << quasi;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(detail::defaultStrategy(100), detail::CsrStrategy::Streaming);
+  EXPECT_EQ(detail::defaultStrategy(10000), detail::CsrStrategy::Vectorised);
 }

@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/csr_detail.hpp"
@@ -161,15 +163,178 @@ void csrPoles(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& 
   }
 }
 
+template <EpsilonRule rule>
+inline double weightOf(double a, double b, double epsilon) {
+  if constexpr (rule == EpsilonRule::Additive) {
+    return (a + epsilon) / (a + b + 2.0 * epsilon);
+  } else {
+    const double sum = a + b;
+    return sum > epsilon ? a / sum : 0.5;
+  }
+}
+
+/// The same poles as csrPoles, computed in passes over a structure of arrays (one array
+/// per coordinate, padded by one point at each end so closed data wraps without
+/// branches), so that every loop vectorises.
+template <int D, EpsilonRule rule, bool quasiOnly>
+void csrPolesSoa(PointsRef q, const Eigen::VectorXd& h, bool closed, double epsilon, PointMatrix& out) {
+  const Eigen::Index n = q.rows(), segments = h.size(), m = n + 2;  // padded index j = i + 1
+  // Arrays m doubles long would sit a multiple of 4 KiB apart for round n, and the loops
+  // that stream through several of them at once would alias in the caches: pad the stride.
+  const Eigen::Index stride = m + 37;
+  // Uninitialised on purpose: every entry read is written first.
+  const std::unique_ptr<double[]> storage(new double[static_cast<size_t>(stride) * (4 * D + 3)]);
+  double* const bufferData = storage.get();
+  double* X[D];
+  double* dd[D];
+  double* D2[D];
+  double* dv[D];
+  for (int c = 0; c < D; ++c) {
+    X[c] = bufferData + (0 * D + c) * stride;
+    dd[c] = bufferData + (1 * D + c) * stride;
+    D2[c] = bufferData + (2 * D + c) * stride;
+    dv[c] = bufferData + (3 * D + c) * stride;
+  }
+  double* H = bufferData + 4 * D * stride;  // H[j]: t_{i+1} - t_i (segment after point i)
+  double* kappa = H + stride;
+  double* hb = kappa + stride;  // t_i - t_{i-1}
+  const double* qd = q.data();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (int c = 0; c < D; ++c) X[c][i + 1] = qd[D * i + c];
+  }
+  for (int c = 0; c < D; ++c) {
+    X[c][0] = X[c][n];      // point -1 = point n-1 (closed)
+    X[c][n + 1] = X[c][1];  // point n = point 0 (closed)
+  }
+  for (Eigen::Index i = 0; i < segments; ++i) H[i + 1] = h[i];
+  H[0] = h[segments - 1];
+  if (!closed) H[n] = h[segments - 1];  // unused by open data
+  H[n + 1] = h[0];
+  // Pass A: first divided differences of segment i (point i to i + 1), j = i + 1.
+  const Eigen::Index jLast = closed ? n : n - 1;  // last segment's j
+  const Eigen::Index jFirst = closed ? 0 : 1;
+  for (int c = 0; c < D; ++c) {
+    double* __restrict out_c = dd[c];
+    const double* __restrict x = X[c];
+    for (Eigen::Index j = jFirst; j <= jLast; ++j) out_c[j] = (x[j + 1] - x[j]) * (1.0 / H[j]);
+  }
+  // Pass B: f_i about t_i for every point with two neighbours: D2 = f''/2, d = f'(t_i), kappa.
+  const Eigen::Index first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
+  for (Eigen::Index j = first + 1; j <= last + 1; ++j) {
+    const double hm = H[j - 1], h0 = H[j], r = 1.0 / (hm + h0);
+    hb[j] = hm;
+    double d1[D], d2[D];
+    for (int c = 0; c < D; ++c) {
+      D2[c][j] = (dd[c][j] - dd[c][j - 1]) * r;
+      dv[c][j] = dd[c][j - 1] + D2[c][j] * hm;
+      d1[c] = dv[c][j];
+      d2[c] = 2.0 * D2[c][j];
+    }
+    double cross2, speed2 = 0.0;
+    if constexpr (D == 2) {
+      const double z = d1[0] * d2[1] - d1[1] * d2[0];
+      cross2 = z * z;
+    } else {
+      const double x = d1[1] * d2[2] - d1[2] * d2[1], y = d1[2] * d2[0] - d1[0] * d2[2],
+                   z = d1[0] * d2[1] - d1[1] * d2[0];
+      cross2 = x * x + y * y + z * z;
+    }
+    for (int c = 0; c < D; ++c) speed2 += d1[c] * d1[c];
+    kappa[j] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
+  }
+  auto curvatureAt = [&](Eigen::Index j, double X0) {  // f of point j at offset X0 from its t
+    Vec<D> a, b;
+    for (int c = 0; c < D; ++c) {
+      a[c] = dv[c][j] + 2.0 * X0 * D2[c][j];
+      b[c] = 2.0 * D2[c][j];
+    }
+    return curvatureOf<D>(a, b);
+  };
+  if (closed) {
+    for (int c = 0; c < D; ++c) {
+      D2[c][0] = D2[c][n];
+      D2[c][n + 1] = D2[c][1];
+    }
+    kappa[0] = kappa[n];
+    kappa[n + 1] = kappa[1];
+  } else {
+    // Ends of open data: f_0 := f_1 and f_{n-1} := f_{n-2}; kappa_0 is the curvature of
+    // f_1 at q_0 (mirrored at the end).
+    for (int c = 0; c < D; ++c) {
+      D2[c][1] = D2[c][2];
+      D2[c][n] = D2[c][n - 1];
+    }
+    kappa[1] = curvatureAt(2, -h[0]);
+    kappa[n] = curvatureAt(n - 1, h[n - 2]);
+  }
+  // Pass C: eq. (6) for every c_i (see csrPoles for the closed form of p_i^L, p_i^R).
+  const Eigen::Index offset = closed ? 0 : 1;
+  out.resize(closed ? n : n + 2, D);
+  double* o = out.data();
+  const double third = 1.0 / 3.0;
+  for (Eigen::Index j = first + 1; j <= last + 1; ++j) {
+    const double hm = hb[j], h0 = H[j];
+    const double ap = (h0 - hm) * third, bp = -hm * h0 * third;
+    double aL = 0.0, aR = 0.0;
+    if constexpr (!quasiOnly) {
+      const double km = kappa[j - 1], k0 = kappa[j], kp = kappa[j + 1];
+      const double mu_i = weightOf<rule>(k0, km, epsilon);
+      const double mu_ip = weightOf<rule>(kp, k0, epsilon);
+      const double nu_i = weightOf<rule>(km, kp, epsilon);
+      aL = (1.0 - nu_i) * mu_i * hm * hm * third;
+      aR = nu_i * (1.0 - mu_ip) * h0 * h0 * third;
+    }
+    for (int c = 0; c < D; ++c) {
+      o[D * (j - 1 + offset) + c] = X[c][j] + dv[c][j] * ap + D2[c][j] * bp - aL * (D2[c][j - 1] - D2[c][j]) -
+                                    aR * (D2[c][j + 1] - D2[c][j]);
+    }
+  }
+  if (!closed) {
+    auto blossom = [&](Eigen::Index j, double x, double y, double z) {
+      Quadratic<D> f;
+      for (int c = 0; c < D; ++c) {
+        f.q[c] = X[c][j];
+        f.d[c] = dv[c][j];
+        f.D2[c] = D2[c][j];
+      }
+      return f.blossom3(x, y, z);
+    };
+    out.row(0) = q.row(0);
+    out.row(1) = blossom(2, -h[0], -h[0], 0.0).transpose();
+    out.row(n) = blossom(n - 1, 0.0, h[n - 2], h[n - 2]).transpose();
+    out.row(n + 1) = q.row(n - 1);
+  }
+}
+
+template <int D>
+void csrPolesFast(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
+                  PointMatrix& out) {
+  if (quasiOnly) csrPolesSoa<D, EpsilonRule::CaseDistinction, true>(q, h, closed, weight.epsilon, out);
+  else if (weight.rule == EpsilonRule::Additive) csrPolesSoa<D, EpsilonRule::Additive, false>(q, h, closed, weight.epsilon, out);
+  else csrPolesSoa<D, EpsilonRule::CaseDistinction, false>(q, h, closed, weight.epsilon, out);
+}
+
 }  // namespace
 
+CsrStrategy defaultStrategy(Eigen::Index n) {
+  // Measured with bench/bench_csr: the vectorised passes win from a few thousand points
+  // (below, their allocation costs more than they save) until their arrays no longer
+  // fit the caches (above, the single streaming pass wins).
+  return n >= 2048 && n <= 131072 ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
+}
+
 BSplineCurve fitCubic(PointsRef q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
-                      EpsilonRule rule, bool quasiOnly) {
+                      EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy) {
   const Weight weight{epsilon / size, rule};
   const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
   PointMatrix poles;
-  if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
-  else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
+  if (strategy.value_or(defaultStrategy(q.rows())) == CsrStrategy::Vectorised) {
+    if (q.cols() == 2) csrPolesFast<2>(q, h, closed, weight, quasiOnly, poles);
+    else csrPolesFast<3>(q, h, closed, weight, quasiOnly, poles);
+  } else {
+    if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
+    else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
+  }
   return closed ? periodicCubic(std::move(poles), t) : clampedCubic(std::move(poles), t);
 }
 
