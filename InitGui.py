@@ -4,10 +4,10 @@ import FreeCADGui
 
 
 class FairSplinesWorkbench(FreeCADGui.Workbench):
-    """Fair curves: csr-spline fitting, curvature combs and plots."""
+    """Fair curves: csr-spline fitting, design with basic curves, curvature combs and plots."""
 
     MenuText = "FairSplines"
-    ToolTip = "Fair curves: csr-spline fitting, curvature combs and curvature plots"
+    ToolTip = "Fair curves: csr-spline fitting, design with basic curves, curvature combs and curvature plots"
 
     def __init__(self):
         import importlib.util
@@ -25,11 +25,15 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, commands
+        from freecad_workbench.gui import ICON_DIR, commands, design_commands
 
         Gui.addIconPath(ICON_DIR)
         self.appendToolbar("FairSplines", list(commands.COMMANDS))
         self.appendMenu("FairSplines", list(commands.COMMANDS))
+        # Design with basic curves: its own toolbar; in the menu the kinds in a submenu.
+        self.appendToolbar("FairSplines design", list(design_commands.DESIGN_COMMANDS))
+        self.appendMenu(["FairSplines", "Basic curve"], list(design_commands.KIND_COMMANDS.values()))
+        self.appendMenu("FairSplines", list(design_commands.DESIGN_COMMANDS[1:]))
 
     def Activated(self):
         pass
