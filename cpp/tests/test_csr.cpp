@@ -166,7 +166,7 @@ TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int dim : {2, 3}) {
     for (bool closed : {false, true}) {
-      for (int n : {3, 4, 5, 9, 50}) {
+      for (int n : {3, 4, 5, 9, 50, 203}) {
         PointMatrix q(n, dim);
         for (int i = 0; i < n; ++i) {
           const double a = 2 * M_PI * i / n;
@@ -180,10 +180,12 @@ TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
           for (bool quasi : {false, true}) {
             const BSplineCurve a = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
                                                     detail::CsrStrategy::Streaming);
-            const BSplineCurve b = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
-                                                    detail::CsrStrategy::Vectorised);
-            ASSERT_EQ(a.poles.rows(), b.poles.rows());
-            EXPECT_LT((a.poles - b.poles).cwiseAbs().maxCoeff(), 1e-14) << dim << closed << n << quasi;
+            for (Eigen::Index window : {8, 13, 4096}) {  // windowed and whole
+              const BSplineCurve b = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
+                                                      detail::CsrStrategy::Vectorised, window);
+              ASSERT_EQ(a.poles.rows(), b.poles.rows());
+              EXPECT_LT((a.poles - b.poles).cwiseAbs().maxCoeff(), 1e-14) << dim << closed << n << quasi << window;
+            }
           }
         }
       }

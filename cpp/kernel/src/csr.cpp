@@ -176,15 +176,23 @@ inline double weightOf(double a, double b, double epsilon) {
 /// The same poles as csrPoles, computed in passes over a structure of arrays (one array
 /// per coordinate, padded by one point at each end so closed data wraps without
 /// branches), so that every loop vectorises.
+/// Scratch memory for csrPolesSoa on up to n points, reused across windows.
+/// Uninitialised on purpose: every entry read is written first. Arrays m doubles long
+/// would sit a multiple of 4 KiB apart for round n, and the loops that stream through
+/// several of them at once would alias in the caches: the stride is padded.
+template <int D>
+struct SoaWorkspace {
+  explicit SoaWorkspace(Eigen::Index n) : stride(n + 2 + 37), storage(new double[static_cast<size_t>(stride) * (4 * D + 3)]) {}
+  Eigen::Index stride;
+  std::unique_ptr<double[]> storage;
+};
+
 template <int D, EpsilonRule rule, bool quasiOnly>
-void csrPolesSoa(PointsRef q, const Eigen::VectorXd& h, bool closed, double epsilon, PointMatrix& out) {
-  const Eigen::Index n = q.rows(), segments = h.size(), m = n + 2;  // padded index j = i + 1
-  // Arrays m doubles long would sit a multiple of 4 KiB apart for round n, and the loops
-  // that stream through several of them at once would alias in the caches: pad the stride.
-  const Eigen::Index stride = m + 37;
-  // Uninitialised on purpose: every entry read is written first.
-  const std::unique_ptr<double[]> storage(new double[static_cast<size_t>(stride) * (4 * D + 3)]);
-  double* const bufferData = storage.get();
+void csrPolesSoa(PointsRef q, const Eigen::VectorXd& h, bool closed, double epsilon, SoaWorkspace<D>& workspace,
+                 PointMatrix& out) {
+  const Eigen::Index n = q.rows(), segments = h.size();  // padded index j = i + 1
+  const Eigen::Index stride = workspace.stride;
+  double* const bufferData = workspace.storage.get();
   double* X[D];
   double* dd[D];
   double* D2[D];
@@ -307,30 +315,71 @@ void csrPolesSoa(PointsRef q, const Eigen::VectorXd& h, bool closed, double epsi
 }
 
 template <int D>
+void csrPolesSoaDispatch(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
+                         SoaWorkspace<D>& workspace, PointMatrix& out) {
+  if (quasiOnly) {
+    csrPolesSoa<D, EpsilonRule::CaseDistinction, true>(q, h, closed, weight.epsilon, workspace, out);
+  } else if (weight.rule == EpsilonRule::Additive) {
+    csrPolesSoa<D, EpsilonRule::Additive, false>(q, h, closed, weight.epsilon, workspace, out);
+  } else {
+    csrPolesSoa<D, EpsilonRule::CaseDistinction, false>(q, h, closed, weight.epsilon, workspace, out);
+  }
+}
+
+/// The vectorised passes window by window, so that their arrays stay in cache. c_i
+/// depends on q_{i-2}..q_{i+2} only, so a window of W points solved as open data gives
+/// the global poles for its points 2..W-3 (and, where a window touches an end of open
+/// data, for the end rows too); windows overlap by four points. Closed data is read
+/// cyclically.
+template <int D>
 void csrPolesFast(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
-                  PointMatrix& out) {
-  if (quasiOnly) csrPolesSoa<D, EpsilonRule::CaseDistinction, true>(q, h, closed, weight.epsilon, out);
-  else if (weight.rule == EpsilonRule::Additive) csrPolesSoa<D, EpsilonRule::Additive, false>(q, h, closed, weight.epsilon, out);
-  else csrPolesSoa<D, EpsilonRule::CaseDistinction, false>(q, h, closed, weight.epsilon, out);
+                  PointMatrix& out, Eigen::Index window) {
+  const Eigen::Index n = q.rows(), W = std::max<Eigen::Index>(window, 8);
+  SoaWorkspace<D> workspace(std::min(n, W));
+  if (n <= W) {
+    csrPolesSoaDispatch<D>(q, h, closed, weight, quasiOnly, workspace, out);
+    return;
+  }
+  out.resize(closed ? n : n + 2, D);
+  PointMatrix local;
+  if (!closed) {
+    for (Eigen::Index s = 0;; s += W - 4) {
+      s = std::min(s, n - W);
+      csrPolesSoaDispatch<D>(q.middleRows(s, W), h.segment(s, W - 1), false, weight, quasiOnly, workspace, local);
+      const bool atStart = s == 0, atEnd = s + W == n;
+      const Eigen::Index from = atStart ? 0 : 3, to = atEnd ? W + 1 : W - 2;  // local rows (c_i is row i + 1)
+      out.middleRows(s + from, to - from + 1) = local.middleRows(from, to - from + 1);
+      if (atEnd) break;
+    }
+    return;
+  }
+  PointMatrix wq(W, D);
+  Eigen::VectorXd wh(W - 1);
+  auto wrap = [n](Eigen::Index i) { return ((i % n) + n) % n; };
+  for (Eigen::Index s = -2; s + 2 < n; s += W - 4) {
+    for (Eigen::Index k = 0; k < W; ++k) wq.row(k) = q.row(wrap(s + k));
+    for (Eigen::Index k = 0; k + 1 < W; ++k) wh[k] = h[wrap(s + k)];
+    csrPolesSoaDispatch<D>(wq, wh, false, weight, quasiOnly, workspace, local);
+    for (Eigen::Index i = 2; i <= W - 3 && s + i < n; ++i) out.row(s + i) = local.row(i + 1);
+  }
 }
 
 }  // namespace
 
 CsrStrategy defaultStrategy(Eigen::Index n) {
-  // Measured with bench/bench_csr: the vectorised passes win from a few thousand points
-  // (below, their allocation costs more than they save) until their arrays no longer
-  // fit the caches (above, the single streaming pass wins).
-  return n >= 2048 && n <= 131072 ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
+  // Measured with bench/bench_csr: the vectorised passes win from a few thousand points;
+  // below, their allocation costs more than they save.
+  return n >= 2048 ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
 }
 
 BSplineCurve fitCubic(PointsRef q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
-                      EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy) {
+                      EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window) {
   const Weight weight{epsilon / size, rule};
   const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
   PointMatrix poles;
   if (strategy.value_or(defaultStrategy(q.rows())) == CsrStrategy::Vectorised) {
-    if (q.cols() == 2) csrPolesFast<2>(q, h, closed, weight, quasiOnly, poles);
-    else csrPolesFast<3>(q, h, closed, weight, quasiOnly, poles);
+    if (q.cols() == 2) csrPolesFast<2>(q, h, closed, weight, quasiOnly, poles, window);
+    else csrPolesFast<3>(q, h, closed, weight, quasiOnly, poles, window);
   } else {
     if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
     else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
