@@ -85,9 +85,9 @@ class DesignSpline:
             obj.Version = self.VERSION
 
     def execute(self, obj):
-        labels = []
+        labels = [piece_label(source, sub) for source, sub in piece_links(obj)]
         try:
-            pieces, labels = design_inputs(obj)
+            pieces, _ = design_inputs(obj)
             result = design_spline(pieces, join_tolerance=float(obj.JoinTolerance), details=True)
         except Exception as exc:  # InputError, or a source the kernel or OCCT could not read
             _fail(obj, _describe(exc, labels))

@@ -25,7 +25,7 @@ def _span_samples(knots, total):
     length = knots[-1] - knots[0]
     values = [knots[0]]
     for a, b in zip(knots[:-1], knots[1:]):
-        steps = max(MIN_PER_SPAN, int(math.ceil(total * (b - a) / length)))
+        steps = max(MIN_PER_SPAN, int(math.ceil(total * (b - a) / length - 1e-9)))
         values.extend(a + (b - a) * np.arange(1, steps + 1) / steps)
     values[-1] = knots[-1]
     return np.array(values)
