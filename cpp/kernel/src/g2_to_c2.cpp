@@ -358,8 +358,10 @@ C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vec
   for (const auto& m : maps) total += static_cast<int>(m.size());
   out.bezier.resize(7 * total, cubicPieces.cols());
   out.beta = Eigen::VectorXd::Ones(total);
+  out.firstPiece.assign(n + 1, total);
   int piece = 0;
   for (int i = 0; i < n; ++i) {
+    out.firstPiece[i] = piece;
     const PointMatrix cubic = cubicPieces.middleRows(4 * i, 4);
     const auto& r = maps[i];
     const int parts = static_cast<int>(r.size());

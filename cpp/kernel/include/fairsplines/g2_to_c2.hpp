@@ -74,6 +74,8 @@ struct C2SexticSpline {
   PointMatrix bezier;
   Eigen::VectorXd beta;
   bool closed = false;
+  /// Piece index where each original cubic piece (arc) starts; one more entry: pieces().
+  std::vector<int> firstPiece;
   int pieces() const { return static_cast<int>(bezier.rows() / 7); }
   /// Knots t_0 = 0 < t_1 < ... with (t_{k+1} - t_k) / (t_k - t_{k-1}) = beta[k], t_1 = 1.
   Eigen::VectorXd knots() const;

@@ -1,0 +1,74 @@
+// Basic shape to NURBS with a curvature-continuous transition strip of degree (6,5):
+// Karčiauskas & Peters, "Free-Form Splines Combining NURBS and Basic Shapes", Section 4.2
+// ("Algorithm for combining NURBS and G2 splines"), and the naive baseline of Fig. 2a.
+// First shape: the sphere zone, joined at its top latitude to a bicubic ring.
+#pragma once
+#include <Geom_BSplineSurface.hxx>
+#include <vector>
+
+#include "fairsplines/blend_shapes.hpp"
+#include "fairsplines/g2_to_c2.hpp"
+
+namespace fairsplines {
+
+/// One Bézier patch of a blend complex, in homogeneous form: (degreeU + 1) (degreeV + 1)
+/// rows (w p, w), row a (degreeV + 1) + b holding b_ab.
+struct TaggedPatch {
+  enum class Role { Basic, Transition, FreeForm };
+  Role role = Role::Basic;
+  int degreeU = 3, degreeV = 3;
+  int uPiece = 0;  ///< index of the u-interval [knotsU[uPiece], knotsU[uPiece + 1]]
+  int vPiece = 0;  ///< row of the complex, counted from the basic shape's first row
+  Homogeneous4 bezier;
+};
+
+/// The patches of a blend, all over the same u-intervals (a closed ring in u). In v the rows
+/// are: the basic shape's pieces, one transition row, the free-form rows. Every patch is
+/// parameterised over [0,1]^2; in u, patch k stands for the interval of length
+/// knotsU[k+1] - knotsU[k] of the shared parameterization.
+struct BlendComplex {
+  std::vector<TaggedPatch> patches;
+  Eigen::VectorXd knotsU;  ///< piecesU + 1 values
+  int piecesU = 0, rowsBasic = 0, rowsFreeForm = 0;
+  bool closedU = true;
+};
+
+/// Exact rational Bézier Geom_BSplineSurface of a patch over [0,1]^2. Throws InputError for
+/// a non-positive weight.
+Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch);
+
+/// The default free-form ring that continues a sphere zone beyond its top latitude: a
+/// periodic bicubic B-spline (weights 1), one span in v with 4 control rows along the
+/// tangent cone of the sphere, starting half a latitude piece above the zone, a quarter
+/// piece apart; in u, one
+/// control point per longitude (Boehm's form: pole i centred on knot u_i), knots `knotsU`
+/// (n + 1 values for n longitude arcs, periodic). Throws InputError if the ring would
+/// cross the axis.
+Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                              const Eigen::VectorXd& latitudes, const Eigen::VectorXd& knotsU);
+
+/// Arc-level knots of the C2 conversion of a circle with scalars betaT: u_0 = 0, intervals
+/// with ratio betaT (the knots of C2SexticSpline::knots() at the arcs' first pieces).
+Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
+
+/// Section 4.2 for a sphere zone over a full turn of longitudes (closed in u), joined at its
+/// top latitude (below pi/2) to `ring` (null: defaultSphereRing). The ring must be periodic
+/// in u with the arc knots of the C2 circle (arcKnots; betaT = the circle's beta, the
+/// heuristic of Section 3) and clamped in v, its first row at the interface. Steps: the
+/// longitude circle becomes the C2 sextic of Section 4.1 (method), giving basic patches of
+/// degree (6,3) that stay on the sphere; the second-order Hermite data (three layers of
+/// Bézier coefficients) of the sphere at its top and of the ring at its first row are
+/// degree-raised to (6,5) and fill one transition row (scalar 1 across both seams).
+/// Throws InputError for an open longitude partition, a top latitude of pi/2, or a ring
+/// whose structure does not match the interface.
+BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                             const Eigen::VectorXd& latitudes, CircleReparam method = CircleReparam::Rho,
+                             Handle(Geom_BSplineSurface) ring = nullptr);
+
+/// The naive baseline of Fig. 2a: the G2 bicubic sphere patches as they are, the ring, and a
+/// transition row of degree (3,5) that Hermite-interpolates both 2-jets without
+/// reparameterization (u-intervals: the arcs). Same ring rules as blendSphereZone.
+BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring = nullptr);
+
+}  // namespace fairsplines

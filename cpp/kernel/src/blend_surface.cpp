@@ -1,0 +1,327 @@
+#include "fairsplines/blend_surface.hpp"
+
+#include <Standard_Failure.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <cmath>
+#include <sstream>
+
+#include "fairsplines/bspline.hpp"
+#include "fairsplines/errors.hpp"
+
+namespace fairsplines {
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+/// Tensor form of a surface of revolution (MATH-NOTES): circle rows (x w1, y w1, w1) in u
+/// times profile rows (rho w2, zeta w2, w2) in v: b_ab = (rho_b x_a, rho_b y_a, zeta_b w_a | omega_b w_a).
+Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile) {
+  const Eigen::Index ku = circle.rows(), kv = profile.rows();
+  Homogeneous4 out(ku * kv, 4);
+  for (Eigen::Index a = 0; a < ku; ++a) {
+    for (Eigen::Index b = 0; b < kv; ++b) {
+      const double weight = profile(b, 2) * circle(a, 2);
+      const Eigen::Vector3d p = profile(b, 0) * circle(a, 0) * f.x + profile(b, 0) * circle(a, 1) * f.y +
+                                profile(b, 1) * circle(a, 2) * f.z + weight * f.origin;
+      out.row(a * kv + b) << p.transpose(), weight;
+    }
+  }
+  return out;
+}
+
+/// Latitude piece j of a sphere of radius R as a homogeneous cubic profile (rho, zeta, omega).
+Homogeneous3 latitudeProfile(const G2CircleSpline& lat, double R, int j) {
+  Homogeneous3 p(4, 3);
+  for (int s = 0; s < 4; ++s) {
+    const auto c = lat.cubic.row(4 * j + s);
+    p.row(s) << R * c[0], R * c[1], c[2];
+  }
+  return p;
+}
+
+/// Homogeneous Bézier patch of the span [u0,u1] x [v0,v1] of an OCCT B-spline surface.
+Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
+                      int& dv) {
+  Handle(Geom_BSplineSurface) c = Handle(Geom_BSplineSurface)::DownCast(s->Copy());
+  c->Segment(u0, u1, v0, v1);
+  du = c->UDegree();
+  dv = c->VDegree();
+  if (c->NbUPoles() != du + 1 || c->NbVPoles() != dv + 1) throw InputError("the free-form net could not be split into Bézier patches");
+  Homogeneous4 out((du + 1) * (dv + 1), 4);
+  for (int a = 0; a <= du; ++a) {
+    for (int b = 0; b <= dv; ++b) {
+      const gp_Pnt p = c->Pole(a + 1, b + 1);
+      const double w = c->Weight(a + 1, b + 1);
+      out.row(a * (dv + 1) + b) << w * p.X(), w * p.Y(), w * p.Z(), w;
+    }
+  }
+  return out;
+}
+
+/// Degree raise in u of a homogeneous patch of degree (du, dv) to degree 6 in u (du = 3).
+Homogeneous4 raiseU(const Homogeneous4& patch, int du, int dv) {
+  if (du == 6) return patch;
+  Homogeneous4 out(7 * (dv + 1), 4);
+  for (int b = 0; b <= dv; ++b) {
+    PointMatrix column(du + 1, 4);
+    for (int a = 0; a <= du; ++a) column.row(a) = patch.row(a * (dv + 1) + b);
+    const PointMatrix raised = raiseCubicToSextic(column);
+    for (int a = 0; a <= 6; ++a) out.row(a * (dv + 1) + b) = raised.row(a);
+  }
+  return out;
+}
+
+/// Second-order Hermite data (three layers) of both sides, degree-raised to 5 in v: rows
+/// 0..2 from the lower patch's top (v = 1, layers dv-2..dv), rows 3..5 from the upper
+/// patch's bottom (v = 0, layers 0..2), scalar 1 across both seams. Both have `ku` columns.
+Homogeneous4 hermiteStrip(const Homogeneous4& lower, int dvLower, const Homogeneous4& upper, int dvUpper, int ku) {
+  Homogeneous4 out(ku * 6, 4);
+  const int nl = dvLower + 1, nu = dvUpper + 1, n = dvLower;
+  for (int a = 0; a < ku; ++a) {
+    const Eigen::RowVector4d b1 = lower.row(a * nl + n - 2), b2 = lower.row(a * nl + n - 1), b3 = lower.row(a * nl + n);
+    // Degree n to 5 with the same 2-jet at the seam: 5 (c1 - c0) = n (b3 - b2),
+    // 20 (c2 - 2 c1 + c0) = n (n - 1) (b3 - 2 b2 + b1).
+    const Eigen::RowVector4d c0 = b3, c1 = b3 + n / 5.0 * (b3 - b2);
+    const Eigen::RowVector4d c2 = 2 * c1 - c0 + n * (n - 1) / 20.0 * (b3 - 2 * b2 + b1);
+    const Eigen::RowVector4d r0 = upper.row(a * nu), r1 = upper.row(a * nu + 1), r2 = upper.row(a * nu + 2);
+    const int m = dvUpper;
+    const Eigen::RowVector4d c5 = r0, c4 = r0 - m / 5.0 * (r1 - r0);
+    const Eigen::RowVector4d c3 = 2 * c4 - c5 + m * (m - 1) / 20.0 * (r2 - 2 * r1 + r0);
+    const Eigen::RowVector4d rows[6] = {c0, c1, c2, c3, c4, c5};
+    for (int b = 0; b < 6; ++b) out.row(a * 6 + b) = rows[b];
+  }
+  return out;
+}
+
+void checkZone(const G2CircleSpline& lon, const Eigen::VectorXd& latitudes, double radius) {
+  if (!lon.closed) throw InputError("blending a sphere zone needs longitudes over a full turn (0 .. 2 pi)");
+  if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  if (latitudes.size() < 2 || !(latitudes[latitudes.size() - 1] < kPi / 2 - 1e-9)) {
+    throw InputError("the top latitude of a sphere zone to blend must lie below pi/2 (the ring joins there)");
+  }
+}
+
+/// Checks the ring against the interface and returns it with its u knots inserted at `cuts`.
+Handle(Geom_BSplineSurface) matchRing(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& arcT,
+                                      const Eigen::VectorXd& cuts) {
+  const int n = static_cast<int>(arcT.size()) - 1;
+  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  if (ring.IsNull()) throw mismatch("no surface");
+  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (ring->UDegree() != 3 || ring->VDegree() != 3) throw mismatch("it must be bicubic");
+  if (ring->NbUKnots() != n + 1) {
+    std::ostringstream os;
+    os << "it needs " << n << " knot intervals in u (one per longitude arc), not " << ring->NbUKnots() - 1;
+    throw mismatch(os.str());
+  }
+  const double period = arcT[n] - arcT[0];
+  for (int i = 0; i <= n; ++i) {
+    if (std::abs(ring->UKnot(i + 1) - arcT[i]) > 1e-9 * period) {
+      std::ostringstream os;
+      os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << arcT[i]
+         << " (knot intervals in the ratios beta of the longitudes)";
+      throw mismatch(os.str());
+    }
+  }
+  if (ring->VMultiplicity(1) != 4) throw mismatch("it must be clamped in v (its first row is the interface)");
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  for (Eigen::Index k = 0; k < cuts.size(); ++k) {
+    bool existing = false;
+    for (int i = 0; i <= n; ++i) existing = existing || std::abs(cuts[k] - arcT[i]) <= 1e-12 * period;
+    if (!existing) r->InsertUKnot(cuts[k], 1, 1e-12 * period);
+  }
+  return r;
+}
+
+}  // namespace
+
+Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch) {
+  const int nu = patch.degreeU + 1, nv = patch.degreeV + 1;
+  if (patch.bezier.rows() != nu * nv) throw InputError("a patch needs (degreeU + 1) (degreeV + 1) points");
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  TColStd_Array2OfReal weights(1, nu, 1, nv);
+  for (int a = 0; a < nu; ++a) {
+    for (int b = 0; b < nv; ++b) {
+      const auto h = patch.bezier.row(a * nv + b);
+      if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
+      poles.SetValue(a + 1, b + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
+      weights.SetValue(a + 1, b + 1, h[3]);
+    }
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  knots.SetValue(1, 0.0);
+  knots.SetValue(2, 1.0);
+  TColStd_Array1OfInteger multsU(1, 2), multsV(1, 2);
+  multsU.Init(nu);
+  multsV.Init(nv);
+  try {
+    return new Geom_BSplineSurface(poles, weights, knots, knots, multsU, multsV, patch.degreeU, patch.degreeV);
+  } catch (const Standard_Failure& failure) {
+    throw InputError(std::string("OpenCASCADE rejected the patch: ") + failure.GetMessageString());
+  }
+}
+
+Eigen::VectorXd arcKnots(const C2SexticSpline& c2) {
+  const Eigen::VectorXd t = c2.knots();
+  const int n = static_cast<int>(c2.firstPiece.size()) - 1;
+  const double firstArc = t[c2.firstPiece[1]] - t[0];  // normalise: the first arc has length 1
+  Eigen::VectorXd T(n + 1);
+  for (int i = 0; i <= n; ++i) T[i] = t[c2.firstPiece[i]] / firstArc;
+  return T;
+}
+
+Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                              const Eigen::VectorXd& latitudes, const Eigen::VectorXd& knotsU) {
+  frame.check();
+  const G2CircleSpline lon = g2Circle(longitudes);
+  checkZone(lon, latitudes, radius);
+  const int n = lon.pieces(), m = static_cast<int>(latitudes.size()) - 1;
+  if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per longitude");
+  // Rows along the tangent of the meridian, starting half the top latitude piece above it,
+  // spaced by a quarter of that piece.
+  const double delta = (latitudes[m] - latitudes[m - 1]) / 2, phi = latitudes[m] + delta, step = radius * delta / 2;
+  Eigen::Vector2d base(radius * std::cos(phi), radius * std::sin(phi)), tangent(-std::sin(phi), std::cos(phi));
+  if (!(base.x() + 3 * step * tangent.x() > 0.05 * radius)) {
+    throw InputError("the default ring would reach the axis: give a free-form net, or lower the top latitude");
+  }
+  TColgp_Array2OfPnt poles(1, n, 1, 4);
+  BSplineCurve layout;
+  for (int j = 0; j < 4; ++j) {
+    const Eigen::Vector2d rz = base + j * step * tangent;
+    PointMatrix row(n, 3);
+    for (int i = 0; i < n; ++i) {
+      // Pole i sits at longitude theta_i, pushed out so that the spline passes near the
+      // circle: a uniform periodic cubic at a knot is (c_{i-1} + 4 c_i + c_{i+1}) / 6.
+      const double a = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(a));
+      const Eigen::Vector3d p = frame.origin + f * rz.x() * (std::cos(lon.theta[i]) * frame.x + std::sin(lon.theta[i]) * frame.y) +
+                                rz.y() * frame.z;
+      row.row(i) = p.transpose();
+    }
+    layout = periodicCubic(row, knotsU);  // pole i centred on knot u_i (Boehm's form)
+    for (int i = 0; i < n; ++i) {
+      poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0), layout.poles(i, 1), layout.poles(i, 2)));
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, static_cast<int>(layout.knots.size())), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, static_cast<int>(layout.mults.size())), vMults(1, 2);
+  for (int k = 0; k < layout.knots.size(); ++k) {
+    uKnots.SetValue(k + 1, layout.knots[k]);
+    uMults.SetValue(k + 1, layout.mults[k]);
+  }
+  vKnots.SetValue(1, 0.0);
+  vKnots.SetValue(2, 1.0);
+  vMults.Init(4);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3, true, false);
+}
+
+BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                             const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring) {
+  frame.check();
+  const G2CircleSpline lon = g2Circle(longitudes), lat = g2Circle(latitudes);
+  checkZone(lon, latitudes, radius);
+  // Section 4.2, step 1: along the interface the G2 circle becomes the C2 sextic of 4.1
+  // (betaT = beta, the heuristic of Section 3); the sphere stays exact.
+  const C2SexticSpline c2 = circleToC2(lon, method);
+  const Eigen::VectorXd T = arcKnots(c2);
+  const double scale = T[1] / (c2.knots()[c2.firstPiece[1]]);
+  BlendComplex out;
+  out.knotsU = c2.knots() * scale;
+  out.piecesU = c2.pieces();
+  out.rowsBasic = lat.pieces();
+  if (ring.IsNull()) ring = defaultSphereRing(frame, radius, longitudes, latitudes, T);
+  const Handle(Geom_BSplineSurface) r = matchRing(ring, T, out.knotsU);
+  const int spansV = r->NbVKnots() - 1;
+  out.rowsFreeForm = spansV;
+  for (int k = 0; k < out.piecesU; ++k) {
+    const PointMatrix circle = c2.bezier.middleRows(7 * k, 7);
+    Homogeneous4 top;
+    for (int j = 0; j < lat.pieces(); ++j) {
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::Basic;
+      p.degreeU = 6;
+      p.degreeV = 3;
+      p.uPiece = k;
+      p.vPiece = j;
+      p.bezier = revolveRows(frame, circle, latitudeProfile(lat, radius, j));
+      if (j + 1 == lat.pieces()) top = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    Homogeneous4 ringBottom;
+    for (int s = 0; s < spansV; ++s) {
+      int du = 0, dv = 0;
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::FreeForm;
+      p.uPiece = k;
+      p.vPiece = lat.pieces() + 1 + s;
+      p.bezier = bezierOf(r, out.knotsU[k], out.knotsU[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
+      p.degreeU = du;
+      p.degreeV = dv;
+      if (s == 0) ringBottom = raiseU(p.bezier, du, dv);
+      out.patches.push_back(std::move(p));
+    }
+    // Steps 2-3: three layers of Bézier coefficients on both sides, degree-raised to (6,5).
+    TaggedPatch strip;
+    strip.role = TaggedPatch::Role::Transition;
+    strip.degreeU = 6;
+    strip.degreeV = 5;
+    strip.uPiece = k;
+    strip.vPiece = lat.pieces();
+    strip.bezier = hermiteStrip(top, 3, ringBottom, 3, 7);
+    out.patches.push_back(std::move(strip));
+  }
+  return out;
+}
+
+BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring) {
+  frame.check();
+  const G2CircleSpline lon = g2Circle(longitudes), lat = g2Circle(latitudes);
+  checkZone(lon, latitudes, radius);
+  // The same arc knots as blendSphereZone (sigma: one piece per arc).
+  const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
+  if (ring.IsNull()) ring = defaultSphereRing(frame, radius, longitudes, latitudes, T);
+  const Handle(Geom_BSplineSurface) r = matchRing(ring, T, T);
+  BlendComplex out;
+  out.knotsU = T;
+  out.piecesU = lon.pieces();
+  out.rowsBasic = lat.pieces();
+  out.rowsFreeForm = r->NbVKnots() - 1;
+  for (int k = 0; k < out.piecesU; ++k) {
+    const PointMatrix circle = lon.cubic.middleRows(4 * k, 4);
+    Homogeneous4 top, ringBottom;
+    for (int j = 0; j < lat.pieces(); ++j) {
+      TaggedPatch p;
+      p.uPiece = k;
+      p.vPiece = j;
+      p.bezier = revolveRows(frame, circle, latitudeProfile(lat, radius, j));
+      if (j + 1 == lat.pieces()) top = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    for (int s = 0; s < out.rowsFreeForm; ++s) {
+      int du = 0, dv = 0;
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::FreeForm;
+      p.uPiece = k;
+      p.vPiece = lat.pieces() + 1 + s;
+      p.bezier = bezierOf(r, T[k], T[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
+      if (s == 0) ringBottom = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    // Fig. 2a: direct second-order Hermite interpolation, degree (3,5), no reparameterization.
+    TaggedPatch strip;
+    strip.role = TaggedPatch::Role::Transition;
+    strip.degreeU = 3;
+    strip.degreeV = 5;
+    strip.uPiece = k;
+    strip.vPiece = lat.pieces();
+    strip.bezier = hermiteStrip(top, 3, ringBottom, 3, 4);
+    out.patches.push_back(std::move(strip));
+  }
+  return out;
+}
+
+}  // namespace fairsplines
