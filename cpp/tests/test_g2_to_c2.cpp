@@ -133,8 +133,21 @@ TEST(Rho, OpenArcAndFreeScalarsBetaTilde) {
     const C2SexticSpline s = circleToC2(circle, CircleReparam::Rho, betaT);
     EXPECT_LT(c2Jump(s), 1e-12) << scale;
     EXPECT_LT(offCircle(s), 1e-12) << scale;
-    for (int i = 1; i < circle.pieces(); ++i) EXPECT_DOUBLE_EQ(s.beta[3 * i], betaT[i]);
+    for (int i = 1; i < circle.pieces(); ++i) {
+      // arc to arc betaT; piece to piece scaled by parts_{i-1} / parts_i
+      const double partsPrev = s.firstPiece[i] - s.firstPiece[i - 1], parts = s.firstPiece[i + 1] - s.firstPiece[i];
+      EXPECT_DOUBLE_EQ(s.beta[s.firstPiece[i]], betaT[i] * partsPrev / parts);
+    }
   }
+}
+
+TEST(Rho, UniformClosedCircleKeepsOnePiecePerArc) {
+  const G2CircleSpline circle = g2Circle(Eigen::VectorXd::LinSpaced(8, 0.0, 2 * kPi));
+  const C2SexticSpline s = circleToC2(circle, CircleReparam::Rho);
+  EXPECT_EQ(s.pieces(), 7);
+  EXPECT_LT(c2Jump(s), 1e-12);
+  EXPECT_LT(offCircle(s), 1e-12);
+  EXPECT_TRUE(reducesToC2(s));
 }
 
 TEST(Rho, UniformPartitionNeedsNoSplitYetIsNotTheIdentity) {
@@ -217,13 +230,14 @@ TEST(Mixed, RhoOnUniformRunsSigmaElsewhereJoinC2) {
     EXPECT_LT(offCircle(s), 1e-12);
     EXPECT_TRUE(reducesToC2(s));
   }
-  // Uniformity is kept inside the run: arcs 1 and 2 of mixedTurn (both neighbours rho)
-  // have the same three pieces.
+  // Uniformity is kept inside the run: arcs 1 and 2 of mixedTurn (both neighbours rho,
+  // betaT = 1) are one piece each, and the same piece up to rotation.
   const C2SexticSpline s = circleToC2(g2Circle(mixedTurn()), CircleReparam::Mixed);
-  for (int j = 0; j < 3; ++j) {
-    const PointMatrix a = s.bezier.middleRows(7 * (3 + j), 7), b = s.bezier.middleRows(7 * (6 + j), 7);
-    EXPECT_LT((a.col(2) - b.col(2)).norm(), 1e-13);  // same weights (rotated points)
-  }
+  EXPECT_EQ(s.firstPiece[1], 3);
+  EXPECT_EQ(s.firstPiece[2], 4);
+  EXPECT_EQ(s.firstPiece[3], 5);
+  const PointMatrix a = s.bezier.middleRows(7 * 3, 7), b = s.bezier.middleRows(7 * 4, 7);
+  EXPECT_LT((a.col(2) - b.col(2)).norm(), 1e-13);  // same weights (rotated points)
 }
 
 TEST(Eq10, HermiteQuadraticsOfThePerturbedCubicStayC2InsideEachArc) {

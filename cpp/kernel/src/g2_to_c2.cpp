@@ -475,6 +475,13 @@ C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Ei
     }
     // Only a third of h0 and h1 is used (and a 7.2 map for 3 betaT need not be monotone on
     // all of [0, 1]): the pieces are checked.
+    if ((h0 - h1).norm() <= 1e-14) {
+      // Appendix 7.1: "for a uniform partition and all betaT = 1 there is no need for such
+      // splitting": the same symmetric map serves both ends, one piece per arc.
+      checkMonotone(h0, "rho", i);
+      maps[i] = {h0};
+      continue;
+    }
     const auto rho = rhoSplitFromMaps(h0, h1);
     for (const Reparam& r : rho) checkMonotone(r, "rho", i);
     maps[i] = {rho[0], rho[1], rho[2]};

@@ -90,7 +90,8 @@ enum class CircleReparam { Rho, Sigma, Mixed };
 std::vector<CircleReparam> mixedChoice(const G2CircleSpline& circle);
 
 /// Section 4.1 for a circle partition: every arc's quadratic composed with rho (three
-/// pieces per arc), sigma (one piece) or the mixed choice; betaT defaults (empty) to the
+/// pieces per arc; one where both end maps agree, as inside uniform runs with betaT = 1),
+/// sigma (one piece) or the mixed choice; betaT defaults (empty) to the
 /// circle's beta (betaT[i] is arc to arc; piece to piece it is scaled by
 /// parts_{i-1} / parts_i, i.e. 1 inside a rho arc, 1/3 from a sigma arc to a rho arc and 3
 /// back). The circle stays exact; the result is C2 in homogeneous space.
