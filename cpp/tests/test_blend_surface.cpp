@@ -4,6 +4,7 @@
 
 #include <Geom_BSplineSurface.hxx>
 #include <cmath>
+#include <GeomAbs_Shape.hxx>
 #include <map>
 
 #include "fairsplines/blend_surface.hpp"
@@ -82,8 +83,12 @@ SeamReport seams(const BlendComplex& c) {
         compare(at.at({kPrev, v}), at.at({k, v}), true, h / hPrev, report.alongU[v]);
         report.worstAlongU = std::max(report.worstAlongU, report.alongU[v]);
       }
-      // Across v: transition|basic and free-form|transition (scalar 1), and inside the ring.
-      if (v >= c.rowsBasic) compare(at.at({k, v - 1}), at.at({k, v}), false, 1.0, report.worstAcrossV);
+      // Across v: transition|basic and free-form|transition (scalar 1), inside the ring, and
+      // inside the basic shape where it was converted to C2 across too (scalar from knotsV).
+      if (v >= c.rowsBasic || (v > 0 && c.basicC2InV)) {
+        const double beta = (c.knotsV[v + 1] - c.knotsV[v]) / (c.knotsV[v] - c.knotsV[v - 1]);
+        compare(at.at({k, v - 1}), at.at({k, v}), false, beta, report.worstAcrossV);
+      }
     }
   }
   return report;
@@ -157,4 +162,33 @@ TEST(SphereBlend, RingThatDoesNotMatchTheInterfaceRaisesInputError) {
   }
   EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 1.0, 2.0}), lat), InputError);                  // not a full turn
   EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);                    // top at the pole
+}
+
+TEST(SphereBlend, BothDirectionsC2GiveOneC2Surface) {
+  const ShapeFrame f = tilted();
+  const double R = 1.5;
+  const Eigen::VectorXd lat = vec({-0.6, 0.1, 0.5, 0.8});
+  const BlendComplex c = blendSphereZone(f, R, nonUniformTurn(), lat, CircleReparam::Rho, nullptr, true);
+  ASSERT_TRUE(c.basicC2InV);
+  EXPECT_LT(offSphere(c, f, R), 1e-10 * R);
+  const SeamReport r = seams(c);
+  EXPECT_LT(r.worst, 1e-8);
+  const Handle(Geom_BSplineSurface) s = singleSurface(c);
+  EXPECT_EQ(s->Continuity(), GeomAbs_C2);
+  EXPECT_EQ(s->UDegree(), 6);
+  EXPECT_EQ(s->VDegree(), 6);
+  // The single surface is the complex: the zone part stays on the sphere.
+  double worst = 0.0;
+  for (int a = 0; a <= 60; ++a) {
+    for (int b = 0; b <= 30; ++b) {
+      const double u = c.knotsU[0] + (c.knotsU[c.piecesU] - c.knotsU[0]) * a / 60.0;
+      const double v = c.knotsV[0] + (c.knotsV[c.rowsBasic] - c.knotsV[0]) * b / 30.0;
+      const gp_Pnt q = s->Value(u, v);
+      worst = std::max(worst, std::abs((Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin).norm() - R));
+    }
+  }
+  EXPECT_LT(worst, 1e-9 * R);
+  // Only G2 across the latitudes, or the naive strip: no single C2 surface.
+  EXPECT_THROW(singleSurface(blendSphereZone(f, R, nonUniformTurn(), lat)), InputError);
+  EXPECT_THROW(singleSurface(blendSphereZoneNaive(f, R, nonUniformTurn(), lat)), InputError);
 }

@@ -219,7 +219,8 @@ Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double ra
 }
 
 BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                             const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring) {
+                             const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring,
+                             bool sexticInV) {
   frame.check();
   const G2CircleSpline lon = g2Circle(longitudes), lat = g2Circle(latitudes);
   checkZone(lon, latitudes, radius);
@@ -231,23 +232,52 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
   BlendComplex out;
   out.knotsU = c2.knots() * scale;
   out.piecesU = c2.pieces();
-  out.rowsBasic = lat.pieces();
+  out.basicC2InV = sexticInV;
+  // Across the interface: the latitude pieces as they are (G2 cubics), or as C2 sextics.
+  std::vector<Homogeneous3> profiles;
+  Eigen::VectorXd basicKnotsV;
+  if (sexticInV) {
+    const C2SexticSpline latC2 = circleToC2(lat, method);
+    for (int j = 0; j < latC2.pieces(); ++j) {
+      Homogeneous3 p(7, 3);
+      for (int b = 0; b < 7; ++b) {
+        const auto c = latC2.bezier.row(7 * j + b);
+        p.row(b) << radius * c[0], radius * c[1], c[2];
+      }
+      profiles.push_back(p);
+    }
+    basicKnotsV = latC2.knots();
+  } else {
+    for (int j = 0; j < lat.pieces(); ++j) profiles.push_back(latitudeProfile(lat, radius, j));
+    basicKnotsV = Eigen::VectorXd::LinSpaced(lat.pieces() + 1, 0.0, lat.pieces());
+  }
+  const int dvBasic = sexticInV ? 6 : 3;
+  out.rowsBasic = static_cast<int>(profiles.size());
   if (ring.IsNull()) ring = defaultSphereRing(frame, radius, longitudes, latitudes, T);
   const Handle(Geom_BSplineSurface) r = matchRing(ring, T, out.knotsU);
   const int spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
+  // Shared v parameterization: scalar 1 across both seams of the strip.
+  out.knotsV.resize(out.rowsBasic + spansV + 2);
+  out.knotsV.head(out.rowsBasic + 1) = basicKnotsV;
+  const double stripLength = basicKnotsV[out.rowsBasic] - basicKnotsV[out.rowsBasic - 1];
+  out.knotsV[out.rowsBasic + 1] = basicKnotsV[out.rowsBasic] + stripLength;
+  for (int sp = 0; sp < spansV; ++sp) {
+    out.knotsV[out.rowsBasic + 2 + sp] = out.knotsV[out.rowsBasic + 1 + sp] +
+                                         stripLength * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
+  }
   for (int k = 0; k < out.piecesU; ++k) {
     const PointMatrix circle = c2.bezier.middleRows(7 * k, 7);
     Homogeneous4 top;
-    for (int j = 0; j < lat.pieces(); ++j) {
+    for (int j = 0; j < out.rowsBasic; ++j) {
       TaggedPatch p;
       p.role = TaggedPatch::Role::Basic;
       p.degreeU = 6;
-      p.degreeV = 3;
+      p.degreeV = dvBasic;
       p.uPiece = k;
       p.vPiece = j;
-      p.bezier = revolveRows(frame, circle, latitudeProfile(lat, radius, j));
-      if (j + 1 == lat.pieces()) top = p.bezier;
+      p.bezier = revolveRows(frame, circle, profiles[j]);
+      if (j + 1 == out.rowsBasic) top = p.bezier;
       out.patches.push_back(std::move(p));
     }
     Homogeneous4 ringBottom;
@@ -256,7 +286,7 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
       TaggedPatch p;
       p.role = TaggedPatch::Role::FreeForm;
       p.uPiece = k;
-      p.vPiece = lat.pieces() + 1 + s;
+      p.vPiece = out.rowsBasic + 1 + s;
       p.bezier = bezierOf(r, out.knotsU[k], out.knotsU[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
       p.degreeU = du;
       p.degreeV = dv;
@@ -269,8 +299,8 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
     strip.degreeU = 6;
     strip.degreeV = 5;
     strip.uPiece = k;
-    strip.vPiece = lat.pieces();
-    strip.bezier = hermiteStrip(top, 3, ringBottom, 3, 7);
+    strip.vPiece = out.rowsBasic;
+    strip.bezier = hermiteStrip(top, dvBasic, ringBottom, 3, 7);
     out.patches.push_back(std::move(strip));
   }
   return out;
@@ -290,6 +320,7 @@ BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const 
   out.piecesU = lon.pieces();
   out.rowsBasic = lat.pieces();
   out.rowsFreeForm = r->NbVKnots() - 1;
+  out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
   for (int k = 0; k < out.piecesU; ++k) {
     const PointMatrix circle = lon.cubic.middleRows(4 * k, 4);
     Homogeneous4 top, ringBottom;
@@ -322,6 +353,99 @@ BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const 
     out.patches.push_back(std::move(strip));
   }
   return out;
+}
+
+TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {
+  TaggedPatch out = patch;
+  auto at = [](const TaggedPatch& p, int a, int b) { return p.bezier.row(a * (p.degreeV + 1) + b); };
+  while (out.degreeU < du) {  // b'_a = a/(n+1) b_{a-1} + (1 - a/(n+1)) b_a
+    TaggedPatch next = out;
+    const int n = out.degreeU;
+    next.degreeU = n + 1;
+    next.bezier.resize((n + 2) * (out.degreeV + 1), 4);
+    for (int a = 0; a <= n + 1; ++a) {
+      for (int b = 0; b <= out.degreeV; ++b) {
+        const double f = static_cast<double>(a) / (n + 1);
+        Eigen::RowVector4d v = Eigen::RowVector4d::Zero();
+        if (a > 0) v += f * at(out, a - 1, b);
+        if (a <= n) v += (1 - f) * at(out, a, b);
+        next.bezier.row(a * (out.degreeV + 1) + b) = v;
+      }
+    }
+    out = next;
+  }
+  while (out.degreeV < dv) {
+    TaggedPatch next = out;
+    const int n = out.degreeV;
+    next.degreeV = n + 1;
+    next.bezier.resize((out.degreeU + 1) * (n + 2), 4);
+    for (int a = 0; a <= out.degreeU; ++a) {
+      for (int b = 0; b <= n + 1; ++b) {
+        const double f = static_cast<double>(b) / (n + 1);
+        Eigen::RowVector4d v = Eigen::RowVector4d::Zero();
+        if (b > 0) v += f * at(out, a, b - 1);
+        if (b <= n) v += (1 - f) * at(out, a, b);
+        next.bezier.row(a * (n + 2) + b) = v;
+      }
+    }
+    out = next;
+  }
+  return out;
+}
+
+Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance) {
+  const int rows = complex.rowsBasic + 1 + complex.rowsFreeForm, K = complex.piecesU;
+  if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1) throw InputError("the complex has no shared knots");
+  int d = 0, e = 0;
+  for (const TaggedPatch& p : complex.patches) {
+    d = std::max(d, p.degreeU);
+    e = std::max(e, p.degreeV);
+  }
+  TColgp_Array2OfPnt poles(1, d * K + 1, 1, e * rows + 1);
+  TColStd_Array2OfReal weights(1, d * K + 1, 1, e * rows + 1);
+  double size = 0.0;
+  int seen = 0;
+  for (const TaggedPatch& patch : complex.patches) {
+    const TaggedPatch p = raisePatch(patch, d, e);
+    ++seen;
+    for (int a = 0; a <= d; ++a) {
+      for (int b = 0; b <= e; ++b) {
+        const auto h = p.bezier.row(a * (e + 1) + b);
+        if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
+        poles.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
+        weights.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, h[3]);
+        size = std::max(size, h.cwiseAbs().maxCoeff());
+      }
+    }
+  }
+  if (seen != K * rows) throw InputError("the complex is not a tensor grid of patches");
+  auto knots = [](const Eigen::VectorXd& t, int degree, TColStd_Array1OfReal& k, TColStd_Array1OfInteger& m) {
+    for (int i = 0; i < t.size(); ++i) {
+      k.SetValue(i + 1, t[i]);
+      m.SetValue(i + 1, i == 0 || i + 1 == t.size() ? degree + 1 : degree);
+    }
+  };
+  TColStd_Array1OfReal ku(1, K + 1), kv(1, rows + 1);
+  TColStd_Array1OfInteger mu(1, K + 1), mv(1, rows + 1);
+  knots(complex.knotsU, d, ku, mu);
+  knots(complex.knotsV, e, kv, mv);
+  Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
+  // C2 where the multiplicities allow it: remove each interior knot down to degree - 2.
+  for (int i = 2; i <= K; ++i) {
+    if (!s->RemoveUKnot(i, d - 2, tolerance * size)) {
+      std::ostringstream os;
+      os << "the complex is not C2 across u knot " << i - 1;
+      throw InputError(os.str());
+    }
+  }
+  for (int j = 2; j <= rows; ++j) {
+    if (!s->RemoveVKnot(j, e - 2, tolerance * size)) {
+      std::ostringstream os;
+      os << "the complex is not C2 across v knot " << j - 1 << " (basic rows only G2? use sexticInV)";
+      throw InputError(os.str());
+    }
+  }
+  return s;
 }
 
 }  // namespace fairsplines

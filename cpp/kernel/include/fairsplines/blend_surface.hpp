@@ -29,8 +29,13 @@ struct TaggedPatch {
 struct BlendComplex {
   std::vector<TaggedPatch> patches;
   Eigen::VectorXd knotsU;  ///< piecesU + 1 values
+  /// rowsBasic + 1 + rowsFreeForm + 1 values: the shared v parameterization of the rows
+  /// (the strip joins both neighbours with scalar 1, so it has the length of the basic
+  /// shape's top row, and the ring's first span that length again).
+  Eigen::VectorXd knotsV;
   int piecesU = 0, rowsBasic = 0, rowsFreeForm = 0;
   bool closedU = true;
+  bool basicC2InV = false;  ///< basic rows converted to C2 sextics across the interface too
 };
 
 /// Exact rational Bézier Geom_BSplineSurface of a patch over [0,1]^2. Throws InputError for
@@ -61,9 +66,22 @@ Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
 /// degree-raised to (6,5) and fill one transition row (scalar 1 across both seams).
 /// Throws InputError for an open longitude partition, a top latitude of pi/2, or a ring
 /// whose structure does not match the interface.
+/// With sexticInV the latitudes are converted too ("or in both" directions, Section 4.2):
+/// basic patches of degree (6,6), the whole complex C2 and a tensor grid (singleSurface).
 BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                              const Eigen::VectorXd& latitudes, CircleReparam method = CircleReparam::Rho,
-                             Handle(Geom_BSplineSurface) ring = nullptr);
+                             Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false);
+
+/// Degree raise of a homogeneous Bézier patch to (du, dv) (not below its degrees).
+TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv);
+
+/// The complex as one Geom_BSplineSurface: every patch raised to the largest degrees
+/// (d, e), assembled over knotsU x knotsV, then every interior knot removed down to
+/// multiplicity d - 2 (e - 2) within `tolerance` (relative to the largest homogeneous
+/// coordinate) so that the multiplicities give C2. Throws InputError where a knot does
+/// not come down (the complex is not C2 there, e.g. basic rows that are only G2). The
+/// closing u seam is kept as the surface's boundary (not periodic).
+Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance = 1e-9);
 
 /// The naive baseline of Fig. 2a: the G2 bicubic sphere patches as they are, the ring, and a
 /// transition row of degree (3,5) that Hermite-interpolates both 2-jets without
