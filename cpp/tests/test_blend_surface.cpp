@@ -4,7 +4,10 @@
 
 #include <Geom_BSplineSurface.hxx>
 #include <cmath>
+#include <BRepCheck_Analyzer.hxx>
 #include <GeomAbs_Shape.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <map>
 
 #include "fairsplines/blend_surface.hpp"
@@ -191,4 +194,14 @@ TEST(SphereBlend, BothDirectionsC2GiveOneC2Surface) {
   // Only G2 across the latitudes, or the naive strip: no single C2 surface.
   EXPECT_THROW(singleSurface(blendSphereZone(f, R, nonUniformTurn(), lat)), InputError);
   EXPECT_THROW(singleSurface(blendSphereZoneNaive(f, R, nonUniformTurn(), lat)), InputError);
+}
+
+TEST(SphereBlend, PatchesSewIntoOneValidShell) {
+  const BlendComplex c = blendSphereZone(tilted(), 1.0, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}));
+  const TopoDS_Shape shell = sewnShell(c);
+  EXPECT_EQ(shell.ShapeType(), TopAbs_SHELL);
+  EXPECT_TRUE(BRepCheck_Analyzer(shell).IsValid());
+  int faces = 0;
+  for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) ++faces;
+  EXPECT_EQ(faces, static_cast<int>(c.patches.size()));
 }

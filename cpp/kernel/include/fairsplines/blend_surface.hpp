@@ -4,6 +4,7 @@
 // First shape: the sphere zone, joined at its top latitude to a bicubic ring.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Shape.hxx>
 #include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
@@ -88,5 +89,9 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
 /// reparameterization (u-intervals: the arcs). Same ring rules as blendSphereZone.
 BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                                   const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring = nullptr);
+
+/// Every patch as a face, sewn into one shell (BRepBuilderAPI_Sewing, tolerance relative
+/// to the complex's size). Throws InputError if sewing does not give a single shell.
+TopoDS_Shape sewnShell(const BlendComplex& complex, double tolerance = 1e-7);
 
 }  // namespace fairsplines
