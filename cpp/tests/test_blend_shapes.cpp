@@ -198,3 +198,17 @@ TEST(BasicShapes, SeamCheckFailsWithoutTheGammaOfEq4) {
   s.gammaU.setZero();
   EXPECT_GT(worstSeamDefect(s), 1e-3);
 }
+
+TEST(G2Circle, HomogeneousPiecesAreNotEvenG1OnlyTheirProjectionIsG2) {
+  // Reading (docs/BLENDING.md): beta, gamma of eqs. (3)-(4) hold for the projected pieces.
+  // In homogeneous space the weight function of eq. (2) has a corner at every joint:
+  // derivative 3 (1 - w) > 0 arriving, 3 (w - 1) < 0 leaving, so no beta > 0 relates them.
+  const G2CircleSpline c = g2Circle(Eigen::VectorXd::LinSpaced(7, 0.0, 2 * kPi));  // uniform
+  for (int i = 1; i < c.pieces(); ++i) {
+    const double arriving = 3 * (c.cubic(4 * i - 1, 2) - c.cubic(4 * i - 2, 2));
+    const double leaving = 3 * (c.cubic(4 * i + 1, 2) - c.cubic(4 * i, 2));
+    EXPECT_GT(arriving, 0.1);
+    EXPECT_LT(leaving, -0.1);
+    EXPECT_GT(c.gamma[i], 0.1);  // and gamma != 0 even for a uniform partition
+  }
+}
