@@ -57,6 +57,11 @@ class SphereZone(_Shape):
         self.latitudes = _angles(latitudes, "latitudes")
         self.g2()  # validate now: InputError names the problem
 
+    @property
+    def around(self):
+        """The angles around the axis."""
+        return self.longitudes
+
     def g2(self):
         return _kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
 
@@ -70,6 +75,10 @@ class Cylinder(_Shape):
         self.angles = _angles(angles, "angles")
         self.heights = _angles(heights, "heights")
         self.g2()
+
+    @property
+    def around(self):
+        return self.angles
 
     def g2(self):
         return _kernel.cylinder(*self._frame_args(), self.radius, self.angles, self.heights)
@@ -85,6 +94,10 @@ class Cone(_Shape):
         self.heights = _angles(heights, "heights")
         self.g2()
 
+    @property
+    def around(self):
+        return self.angles
+
     def g2(self):
         return _kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
 
@@ -99,6 +112,10 @@ class Torus(_Shape):
         self.angles_u = _angles(angles_u, "angles_u")
         self.angles_v = _angles(angles_v, "angles_v")
         self.g2()
+
+    @property
+    def around(self):
+        return self.angles_u
 
     def g2(self):
         return _kernel.torus(*self._frame_args(), self.major_radius, self.minor_radius, self.angles_u, self.angles_v)

@@ -222,11 +222,28 @@ void bindBlend(py::module_& m) {
       "poles"_a, "weights"_a, "knots_u"_a, "knots_v"_a, "mults_u"_a, "mults_v"_a, "degree_u"_a, "degree_v"_a,
       "periodic_u"_a, "periodic_v"_a, "nu"_a, "nv"_a, "A kernel BSplineSurface from arrays (poles nu*nv x 3, row i*nv+j).");
   m.def(
-      "sphere_ring_knots",
-      [](const Eigen::VectorXd& longitudes, const std::string& method) {
-        return arcKnots(circleToC2(g2Circle(longitudes), methodOf(method)));
+      "blend_cone",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
+         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights, const std::string& method,
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+        return blendCone(frameOf(o, x, y), radius0, slope, angles, heights, methodOf(method), ringOf(ring),
+                         bothDirections, naive);
       },
-      "longitudes"_a, "method"_a = "rho", "The u knots a free-form ring must have to join a sphere zone.");
+      "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a, "method"_a = "rho",
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+  m.def(
+      "blend_torus",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
+         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV, const std::string& method,
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+        return blendTorus(frameOf(o, x, y), R, r, anglesU, anglesV, methodOf(method), ringOf(ring), bothDirections,
+                          naive);
+      },
+      "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+  m.def(
+      "ring_knots", [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
+      "angles"_a, "method"_a = "rho", "The u knots (one period) a free-form ring must have to join a shape.");
 }
 
 }  // namespace fairsplines::python

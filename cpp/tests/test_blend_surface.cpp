@@ -205,3 +205,64 @@ TEST(SphereBlend, PatchesSewIntoOneValidShell) {
   for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) ++faces;
   EXPECT_EQ(faces, static_cast<int>(c.patches.size()));
 }
+
+namespace {
+
+Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
+  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
+  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
+}
+
+template <class F>
+double offShape(const BlendComplex& c, F distance) {
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::Basic) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 12; ++a) {
+      for (int b = 0; b <= 12; ++b) worst = std::max(worst, std::abs(distance(s->Value(a / 12.0, b / 12.0))));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(ConeBlend, CylinderAndConeComplexesAreC2AndStayExact) {
+  const ShapeFrame f = tilted();
+  for (double slope : {0.0, -0.3, 0.4}) {
+    for (bool both : {false, true}) {
+      const BlendComplex c = blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}), CircleReparam::Rho,
+                                       nullptr, both);
+      EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
+                  const auto l = localOf(f, q);
+                  return (std::hypot(l.x(), l.y()) - (2.0 + slope * l.z())) / std::sqrt(1 + slope * slope);
+                }),
+                1e-10 * 4);
+      EXPECT_LT(seams(c).worst, 1e-8) << slope << " " << both;
+      if (both) {
+        EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2) << slope;
+      }
+    }
+    const BlendComplex naive = blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}),
+                                         CircleReparam::Rho, nullptr, false, true);
+    EXPECT_GT(seams(naive).alongU[naive.rowsBasic], 1e-3) << slope;
+  }
+}
+
+TEST(TorusBlend, TorusZoneComplexIsC2AndStaysExact) {
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd tube = vec({-1.0, -0.2, 0.4, 0.9});
+  for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma}) {
+    const BlendComplex c = blendTorus(f, 3.0, 1.0, nonUniformTurn(), tube, method, nullptr, true);
+    EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
+                const auto l = localOf(f, q);
+                return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
+              }),
+              1e-10 * 4);
+    EXPECT_LT(seams(c).worst, 1e-8);
+    EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  }
+  // A closed tube has no boundary to join.
+  EXPECT_THROW(blendTorus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})), InputError);
+}

@@ -118,13 +118,34 @@ def test_user_ring_must_match_the_interface():
         fw.blend_basic_shape(zone, freeform=bad)
 
 
-def test_unimplemented_parts_say_so():
-    cyl = fw.shapes.Cylinder(CENTER, 1.0, NON_UNIFORM, [0.0, 1.0])
-    with pytest.raises(NotImplementedError, match="Cylinder"):
-        fw.blend_basic_shape(cyl)
+@pytest.mark.parametrize("shape", [
+    fw.shapes.Cylinder(CENTER, 1.0, NON_UNIFORM, [0.0, 0.4, 1.0], axis=AXIS),
+    fw.shapes.Cone(CENTER, 1.5, -0.4, NON_UNIFORM, [0.0, 0.4, 1.0], axis=AXIS),
+    fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, [-1.0, -0.2, 0.4, 0.9], axis=AXIS),
+], ids=["cylinder", "cone", "torus"])
+def test_every_shape_blends_c2_and_naive_does_not(shape):
+    result = fw.blend_basic_shape(shape, method="sigma")
+    assert result.surface.Continuity == "C2"
+    assert result.shell.isValid()
+    knots = fw.freeform_knots(shape, "sigma")
+    assert _strip_jump(result.patches, knots) < 1e-8
+    naive = fw.blend_naive(shape)
+    assert naive.surface is None
+    assert _strip_jump(naive.patches, knots) > 1e-3
+
+
+def test_bad_blend_requests():
     zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES)
     with pytest.raises(NotImplementedError, match="C1"):
         fw.blend_basic_shape(zone, continuity="C1")
+    with pytest.raises(fw.InputError, match="continuity"):
+        fw.blend_basic_shape(zone, continuity="G7")
+    with pytest.raises(fw.InputError, match="full turn"):
+        fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 1.0, 2.0], [0.0, 1.0]))
+    with pytest.raises(fw.InputError, match="no boundary"):
+        fw.blend_basic_shape(fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, NON_UNIFORM))
+    with pytest.raises(fw.InputError, match="below pi/2"):
+        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]))
 
 
 def test_user_ring_on_the_interface_knots_blends_c2():

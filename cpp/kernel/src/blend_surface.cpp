@@ -38,13 +38,80 @@ Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix
   return out;
 }
 
-/// Latitude piece j of a sphere of radius R as a homogeneous cubic profile (rho, zeta, omega).
-Homogeneous3 latitudeProfile(const G2CircleSpline& lat, double R, int j) {
-  Homogeneous3 p(4, 3);
-  for (int s = 0; s < 4; ++s) {
-    const auto c = lat.cubic.row(4 * j + s);
-    p.row(s) << R * c[0], R * c[1], c[2];
+/// The profile of a shape of revolution in the (distance from the axis, height) plane, as
+/// G2 cubic pieces (eq. (2) for circles, degree-raised lines) and as C2 sextic pieces
+/// (Section 4.1), with the interface at its end.
+struct RevolvedProfile {
+  std::vector<Homogeneous3> cubic;   ///< 4 homogeneous rows (rho w, zeta w, w) per piece
+  std::vector<Homogeneous3> sextic;  ///< 7 rows per piece, C2 in homogeneous space
+  Eigen::VectorXd sexticKnots;       ///< pieces + 1 knots of the sextic pieces
+  Eigen::Vector2d end, tangent;      ///< (rho, zeta) at the interface and the unit direction leaving it
+  double size = 1.0;                 ///< length scale of the last piece (for the default ring)
+};
+
+/// A circle profile: centre (rhoOffset, 0), radius r, partition `angles` (the circle's
+/// pieces (x, y, w) map to (rhoOffset w + r x, r y, w)).
+RevolvedProfile circleProfile(double rhoOffset, double r, const Eigen::VectorXd& angles, CircleReparam method) {
+  const G2CircleSpline c = g2Circle(angles);
+  if (c.closed) throw InputError("a closed profile circle has no boundary to blend at; give an open range of angles");
+  RevolvedProfile p;
+  auto map = [&](const Eigen::RowVectorXd& h) {
+    Eigen::RowVector3d out;
+    out << rhoOffset * h[2] + r * h[0], r * h[1], h[2];
+    return out;
+  };
+  for (int j = 0; j < c.pieces(); ++j) {
+    Homogeneous3 q(4, 3);
+    for (int k = 0; k < 4; ++k) q.row(k) = map(c.cubic.row(4 * j + k));
+    p.cubic.push_back(q);
   }
+  const C2SexticSpline c2 = circleToC2(c, method);
+  for (int j = 0; j < c2.pieces(); ++j) {
+    Homogeneous3 q(7, 3);
+    for (int k = 0; k < 7; ++k) q.row(k) = map(c2.bezier.row(7 * j + k));
+    p.sextic.push_back(q);
+  }
+  p.sexticKnots = c2.knots();
+  const double phi = c.theta[c.pieces()];
+  p.end << rhoOffset + r * std::cos(phi), r * std::sin(phi);
+  p.tangent << -std::sin(phi), std::cos(phi);
+  p.size = r * c.alpha[c.pieces() - 1];
+  return p;
+}
+
+/// A straight profile rho = radius0 + slope z over increasing heights: degree-raised
+/// lines (beta_j = h_j / h_{j-1}, gamma_j = 0), which are already C2 over the heights.
+RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd& heights) {
+  const int m = static_cast<int>(heights.size()) - 1;
+  if (m < 1) throw InputError("a profile needs at least two heights");
+  for (int j = 0; j <= m; ++j) {
+    if (!std::isfinite(heights[j])) throw InputError("non-finite height");
+    if (j > 0 && !(heights[j] > heights[j - 1])) {
+      std::ostringstream os;
+      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
+      throw InputError(os.str());
+    }
+    if (!(radius0 + slope * heights[j] > 0)) {
+      std::ostringstream os;
+      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
+      throw InputError(os.str());
+    }
+  }
+  RevolvedProfile p;
+  for (int j = 0; j < m; ++j) {
+    Homogeneous3 q(4, 3);
+    for (int k = 0; k < 4; ++k) {
+      const double z = heights[j] + (heights[j + 1] - heights[j]) * k / 3.0;
+      q.row(k) << radius0 + slope * z, z, 1.0;
+    }
+    p.cubic.push_back(q);
+    const PointMatrix raised = raiseCubicToSextic(PointMatrix(q));
+    p.sextic.push_back(Homogeneous3(raised));
+  }
+  p.sexticKnots = heights.array() - heights[0];
+  p.end << radius0 + slope * heights[m], heights[m];
+  p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
+  p.size = heights[m] - heights[m - 1];
   return p;
 }
 
@@ -100,14 +167,6 @@ Homogeneous4 hermiteStrip(const Homogeneous4& lower, int dvLower, const Homogene
     for (int b = 0; b < 6; ++b) out.row(a * 6 + b) = rows[b];
   }
   return out;
-}
-
-void checkZone(const G2CircleSpline& lon, const Eigen::VectorXd& latitudes, double radius) {
-  if (!lon.closed) throw InputError("blending a sphere zone needs longitudes over a full turn (0 .. 2 pi)");
-  if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
-  if (latitudes.size() < 2 || !(latitudes[latitudes.size() - 1] < kPi / 2 - 1e-9)) {
-    throw InputError("the top latitude of a sphere zone to blend must lie below pi/2 (the ring joins there)");
-  }
 }
 
 /// Checks the ring against the interface and returns it with its u knots inserted at `cuts`.
@@ -179,37 +238,44 @@ Eigen::VectorXd arcKnots(const C2SexticSpline& c2) {
   return T;
 }
 
-Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                                              const Eigen::VectorXd& latitudes, const Eigen::VectorXd& knotsU) {
+namespace {
+
+G2CircleSpline checkedLongitudes(const ShapeFrame& frame, const Eigen::VectorXd& longitudes) {
   frame.check();
-  const G2CircleSpline lon = g2Circle(longitudes);
-  checkZone(lon, latitudes, radius);
-  const int n = lon.pieces(), m = static_cast<int>(latitudes.size()) - 1;
+  G2CircleSpline lon = g2Circle(longitudes);
+  if (!lon.closed) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
+  return lon;
+}
+
+/// The default free-form ring after a profile's end: 4 rows along the end tangent, the
+/// first half the last piece's length beyond the interface, a quarter apart; in u one
+/// pole per longitude (Boehm's form: pole i centred on knot u_i), periodic cubic.
+Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& p,
+                                        const Eigen::VectorXd& knotsU) {
+  const int n = lon.pieces();
   if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per longitude");
-  // Rows along the tangent of the meridian, starting half the top latitude piece above it,
-  // spaced by a quarter of that piece.
-  const double delta = (latitudes[m] - latitudes[m - 1]) / 2, phi = latitudes[m] + delta, step = radius * delta / 2;
-  Eigen::Vector2d base(radius * std::cos(phi), radius * std::sin(phi)), tangent(-std::sin(phi), std::cos(phi));
-  if (!(base.x() + 3 * step * tangent.x() > 0.05 * radius)) {
-    throw InputError("the default ring would reach the axis: give a free-form net, or lower the top latitude");
+  const Eigen::Vector2d base = p.end + p.size / 2 * p.tangent;
+  const double step = p.size / 4;
+  const double scale = std::max(std::abs(p.end.x()), std::abs(p.end.y())) + p.size;
+  if (!(base.x() > 0.05 * scale) || !(base.x() + 3 * step * p.tangent.x() > 0.05 * scale)) {
+    throw InputError("the default ring would reach the axis: give a free-form net");
   }
   TColgp_Array2OfPnt poles(1, n, 1, 4);
   BSplineCurve layout;
   for (int j = 0; j < 4; ++j) {
-    const Eigen::Vector2d rz = base + j * step * tangent;
+    const Eigen::Vector2d rz = base + j * step * p.tangent;
     PointMatrix row(n, 3);
     for (int i = 0; i < n; ++i) {
-      // Pole i sits at longitude theta_i, pushed out so that the spline passes near the
-      // circle: a uniform periodic cubic at a knot is (c_{i-1} + 4 c_i + c_{i+1}) / 6.
+      // Pushed out so that the spline passes near the circle of radius rz.x(): a uniform
+      // periodic cubic at a knot is (c_{i-1} + 4 c_i + c_{i+1}) / 6.
       const double a = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(a));
-      const Eigen::Vector3d p = frame.origin + f * rz.x() * (std::cos(lon.theta[i]) * frame.x + std::sin(lon.theta[i]) * frame.y) +
+      const Eigen::Vector3d q = frame.origin +
+                                f * rz.x() * (std::cos(lon.theta[i]) * frame.x + std::sin(lon.theta[i]) * frame.y) +
                                 rz.y() * frame.z;
-      row.row(i) = p.transpose();
+      row.row(i) = q.transpose();
     }
-    layout = periodicCubic(row, knotsU);  // pole i centred on knot u_i (Boehm's form)
-    for (int i = 0; i < n; ++i) {
-      poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0), layout.poles(i, 1), layout.poles(i, 2)));
-    }
+    layout = periodicCubic(row, knotsU);
+    for (int i = 0; i < n; ++i) poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0), layout.poles(i, 1), layout.poles(i, 2)));
   }
   TColStd_Array1OfReal uKnots(1, static_cast<int>(layout.knots.size())), vKnots(1, 2);
   TColStd_Array1OfInteger uMults(1, static_cast<int>(layout.mults.size())), vMults(1, 2);
@@ -223,14 +289,14 @@ Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double ra
   return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3, true, false);
 }
 
-BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                             const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring,
-                             bool sexticInV) {
-  frame.check();
-  const G2CircleSpline lon = g2Circle(longitudes), lat = g2Circle(latitudes);
-  checkZone(lon, latitudes, radius);
-  // Section 4.2, step 1: along the interface the G2 circle becomes the C2 sextic of 4.1
-  // (betaT = beta, the heuristic of Section 3); the sphere stays exact.
+/// Section 4.2 for a shape of revolution with its interface at the profile's end.
+BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
+                           CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {
+  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
+    throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
+  }
+  // Step 1: along the interface the G2 circle becomes the C2 sextic of 4.1 (betaT = beta,
+  // the heuristic of Section 3); the basic shape stays exact.
   const C2SexticSpline c2 = circleToC2(lon, method);
   const Eigen::VectorXd T = arcKnots(c2);
   const double scale = T[1] / (c2.knots()[c2.firstPiece[1]]);
@@ -238,27 +304,13 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
   out.knotsU = c2.knots() * scale;
   out.piecesU = c2.pieces();
   out.basicC2InV = sexticInV;
-  // Across the interface: the latitude pieces as they are (G2 cubics), or as C2 sextics.
-  std::vector<Homogeneous3> profiles;
-  Eigen::VectorXd basicKnotsV;
-  if (sexticInV) {
-    const C2SexticSpline latC2 = circleToC2(lat, method);
-    for (int j = 0; j < latC2.pieces(); ++j) {
-      Homogeneous3 p(7, 3);
-      for (int b = 0; b < 7; ++b) {
-        const auto c = latC2.bezier.row(7 * j + b);
-        p.row(b) << radius * c[0], radius * c[1], c[2];
-      }
-      profiles.push_back(p);
-    }
-    basicKnotsV = latC2.knots();
-  } else {
-    for (int j = 0; j < lat.pieces(); ++j) profiles.push_back(latitudeProfile(lat, radius, j));
-    basicKnotsV = Eigen::VectorXd::LinSpaced(lat.pieces() + 1, 0.0, lat.pieces());
-  }
+  // Across the interface: the profile's G2 cubics as they are, or its C2 sextics.
+  const std::vector<Homogeneous3>& profiles = sexticInV ? profile.sextic : profile.cubic;
+  const Eigen::VectorXd basicKnotsV = sexticInV ? profile.sexticKnots
+                                                : Eigen::VectorXd::LinSpaced(profile.cubic.size() + 1, 0.0, profile.cubic.size());
   const int dvBasic = sexticInV ? 6 : 3;
   out.rowsBasic = static_cast<int>(profiles.size());
-  if (ring.IsNull()) ring = defaultSphereRing(frame, radius, longitudes, latitudes, T);
+  if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
   const Handle(Geom_BSplineSurface) r = matchRing(ring, T, out.knotsU);
   const int spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
@@ -311,30 +363,31 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
   return out;
 }
 
-BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring) {
-  frame.check();
-  const G2CircleSpline lon = g2Circle(longitudes), lat = g2Circle(latitudes);
-  checkZone(lon, latitudes, radius);
-  // The same arc knots as blendSphereZone (sigma: one piece per arc).
+/// The naive baseline of Fig. 2a for a shape of revolution.
+BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
+                                Handle(Geom_BSplineSurface) ring) {
+  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
+    throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
+  }
+  // The same arc knots as the blend (sigma: one piece per arc).
   const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
-  if (ring.IsNull()) ring = defaultSphereRing(frame, radius, longitudes, latitudes, T);
+  if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
   const Handle(Geom_BSplineSurface) r = matchRing(ring, T, T);
   BlendComplex out;
   out.knotsU = T;
   out.piecesU = lon.pieces();
-  out.rowsBasic = lat.pieces();
+  out.rowsBasic = static_cast<int>(profile.cubic.size());
   out.rowsFreeForm = r->NbVKnots() - 1;
   out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
   for (int k = 0; k < out.piecesU; ++k) {
     const PointMatrix circle = lon.cubic.middleRows(4 * k, 4);
     Homogeneous4 top, ringBottom;
-    for (int j = 0; j < lat.pieces(); ++j) {
+    for (int j = 0; j < out.rowsBasic; ++j) {
       TaggedPatch p;
       p.uPiece = k;
       p.vPiece = j;
-      p.bezier = revolveRows(frame, circle, latitudeProfile(lat, radius, j));
-      if (j + 1 == lat.pieces()) top = p.bezier;
+      p.bezier = revolveRows(frame, circle, profile.cubic[j]);
+      if (j + 1 == out.rowsBasic) top = p.bezier;
       out.patches.push_back(std::move(p));
     }
     for (int s = 0; s < out.rowsFreeForm; ++s) {
@@ -342,7 +395,7 @@ BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const 
       TaggedPatch p;
       p.role = TaggedPatch::Role::FreeForm;
       p.uPiece = k;
-      p.vPiece = lat.pieces() + 1 + s;
+      p.vPiece = out.rowsBasic + 1 + s;
       p.bezier = bezierOf(r, T[k], T[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
       if (s == 0) ringBottom = p.bezier;
       out.patches.push_back(std::move(p));
@@ -353,11 +406,69 @@ BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const 
     strip.degreeU = 3;
     strip.degreeV = 5;
     strip.uPiece = k;
-    strip.vPiece = lat.pieces();
+    strip.vPiece = out.rowsBasic;
     strip.bezier = hermiteStrip(top, 3, ringBottom, 3, 4);
     out.patches.push_back(std::move(strip));
   }
   return out;
+}
+
+RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, CircleReparam method) {
+  if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
+    if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) throw InputError("latitudes must lie in [-pi/2, pi/2]");
+  }
+  if (latitudes.size() < 2 || !(latitudes[latitudes.size() - 1] < kPi / 2 - 1e-9)) {
+    throw InputError("the top latitude of a sphere zone to blend must lie below pi/2 (the ring joins there)");
+  }
+  return circleProfile(0.0, radius, latitudes, method);
+}
+
+RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV, CircleReparam method) {
+  if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
+  return circleProfile(R, r, anglesV, method);
+}
+
+}  // namespace
+
+Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                              const Eigen::VectorXd& latitudes, const Eigen::VectorXd& knotsU) {
+  return defaultRing(frame, checkedLongitudes(frame, longitudes), sphereProfile(radius, latitudes, CircleReparam::Rho),
+                     knotsU);
+}
+
+BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                             const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring,
+                             bool sexticInV) {
+  return blendRevolved(frame, checkedLongitudes(frame, longitudes), sphereProfile(radius, latitudes, method), method,
+                       ring, sexticInV);
+}
+
+BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring) {
+  return blendRevolvedNaive(frame, checkedLongitudes(frame, longitudes),
+                            sphereProfile(radius, latitudes, CircleReparam::Rho), ring);
+}
+
+BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
+                       const Eigen::VectorXd& heights, CircleReparam method, Handle(Geom_BSplineSurface) ring,
+                       bool sexticInV, bool naive) {
+  if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
+  const G2CircleSpline lon = checkedLongitudes(frame, angles);
+  const RevolvedProfile p = lineProfile(radius0, slope, heights);
+  return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
+}
+
+BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
+                        const Eigen::VectorXd& anglesV, CircleReparam method, Handle(Geom_BSplineSurface) ring,
+                        bool sexticInV, bool naive) {
+  const G2CircleSpline lon = checkedLongitudes(frame, anglesU);
+  const RevolvedProfile p = torusProfile(R, r, anglesV, method);
+  return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
+}
+
+Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam method) {
+  return arcKnots(circleToC2(g2Circle(longitudes), method));
 }
 
 TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {

@@ -45,8 +45,8 @@ Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch);
 
 /// The default free-form ring that continues a sphere zone beyond its top latitude: a
 /// periodic bicubic B-spline (weights 1), one span in v with 4 control rows along the
-/// tangent cone of the sphere, starting half a latitude piece above the zone, a quarter
-/// piece apart; in u, one
+/// tangent cone of the sphere, starting half the top piece's length beyond the interface,
+/// a quarter of it apart; in u, one
 /// control point per longitude (Boehm's form: pole i centred on knot u_i), knots `knotsU`
 /// (n + 1 values for n longitude arcs, periodic). Throws InputError if the ring would
 /// cross the axis.
@@ -72,6 +72,24 @@ Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
 BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                              const Eigen::VectorXd& latitudes, CircleReparam method = CircleReparam::Rho,
                              Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false);
+
+/// Section 4.2 for a cone (a cylinder with slope 0): radius radius0 + slope z, angles over a
+/// full turn, increasing heights; the interface is the top height. naive: the Fig. 2a
+/// baseline instead (method and sexticInV unused). Ring rules as blendSphereZone; the
+/// default ring continues along the cone's generator.
+BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
+                       const Eigen::VectorXd& heights, CircleReparam method = CircleReparam::Rho,
+                       Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false);
+
+/// Section 4.2 for a torus zone: anglesU over a full turn, anglesV an open range around the
+/// tube (0 = outer equator); the interface is the last v angle. Throws InputError for a
+/// closed tube range (no boundary to join).
+BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
+                        const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho,
+                        Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false);
+
+/// The u knots (one period) a free-form ring must have: arcKnots of the C2 circle.
+Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam method = CircleReparam::Rho);
 
 /// Degree raise of a homogeneous Bézier patch to (du, dv) (not below its degrees).
 TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv);
