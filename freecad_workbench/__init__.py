@@ -21,6 +21,8 @@ from .curves import (  # noqa: E402
 )
 from . import basic  # noqa: E402
 from .design import ApproximationError, DesignResult, approximation_error, design_spline, revolve_profile  # noqa: E402
+from . import shapes  # noqa: E402
+from .blend import BlendResult, blend_basic_shape, blend_naive, freeform_knots  # noqa: E402
 from .analysis import (  # noqa: E402
     CurvatureProfile,
     curvature_profile,
@@ -47,5 +49,10 @@ __all__ = [
     "curvature_sign_changes",
     "curvature_extrema",
     "max_distance",
+    "shapes",
+    "BlendResult",
+    "blend_basic_shape",
+    "blend_naive",
+    "freeform_knots",
 ]
 __version__ = "0.1.0"

@@ -85,6 +85,27 @@ def surface_to_part(surface):
     return result
 
 
+def surface_from_part(surface):
+    """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact)."""
+    import Part
+
+    if isinstance(surface, Part.Shape):
+        faces = surface.Faces
+        if len(faces) != 1:
+            raise InputError(f"expected one face, got a shape with {len(faces)} faces")
+        surface = faces[0].Surface
+    if not isinstance(surface, Part.BSplineSurface):
+        raise InputError(f"expected a Part.BSplineSurface, got {type(surface).__name__}")
+    poles = np.array([[(p.x, p.y, p.z) for p in row] for row in surface.getPoles()], dtype=float)
+    nu, nv = poles.shape[0], poles.shape[1]
+    weights = np.array(surface.getWeights(), dtype=float).reshape(nu * nv)
+    return _kernel.make_bspline_surface(
+        np.ascontiguousarray(poles.reshape(nu * nv, 3)), weights, np.array(surface.getUKnots(), dtype=float),
+        np.array(surface.getVKnots(), dtype=float), np.array(surface.getUMultiplicities(), dtype=np.int32),
+        np.array(surface.getVMultiplicities(), dtype=np.int32), surface.UDegree, surface.VDegree,
+        surface.isUPeriodic(), surface.isVPeriodic(), nu, nv)
+
+
 def _load_bridge():
     try:
         from . import occ_bridge

@@ -4,4 +4,5 @@
 namespace fairsplines::python {
 void bindCurves(pybind11::module_& m);
 void bindDesign(pybind11::module_& m);
+void bindBlend(pybind11::module_& m);
 }

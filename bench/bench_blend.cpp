@@ -1,0 +1,50 @@
+// Benchmark (issue 5): time to build the blend complex of a sphere zone with 8 x 4 patches
+// plus its default free-form ring (kernel only), per reparameterization. The GeomPlate G2
+// comparison of the issue is not in yet (see docs/BLENDING.md).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "fairsplines/blend_surface.hpp"
+
+using namespace fairsplines;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+template <class F>
+double medianSeconds(F&& f, int repeats) {
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = Clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
+  return t[repeats / 2];
+}
+}  // namespace
+
+int main() {
+  const double pi = std::acos(-1.0);
+  const Eigen::VectorXd uniform = Eigen::VectorXd::LinSpaced(9, 0.0, 2 * pi);
+  Eigen::VectorXd nonUniform(9);
+  nonUniform << 0.0, 0.5, 1.0, 1.5, 2.0, 2.9, 3.3, 4.6, 2 * pi;
+  Eigen::VectorXd latitudes(5);
+  latitudes << -0.8, -0.3, 0.1, 0.5, 0.9;
+  std::printf("sphere zone 8 x 4 + default ring, kernel (median of 200), target <= 1 ms\n");
+  struct Case { const char* name; const Eigen::VectorXd* lon; CircleReparam method; };
+  const Case cases[] = {{"uniform, rho", &uniform, CircleReparam::Rho},
+                        {"non-uniform, rho", &nonUniform, CircleReparam::Rho},
+                        {"non-uniform, sigma", &nonUniform, CircleReparam::Sigma},
+                        {"non-uniform, mixed", &nonUniform, CircleReparam::Mixed}};
+  for (const Case& c : cases) {
+    std::size_t patches = 0;
+    const double s = medianSeconds([&] { patches = blendSphereZone(ShapeFrame{}, 1.0, *c.lon, latitudes, c.method).patches.size(); }, 200);
+    std::printf("  %-20s %8.3f ms  (%zu patches)\n", c.name, 1e3 * s, patches);
+  }
+  const double naive = medianSeconds([&] { blendSphereZoneNaive(ShapeFrame{}, 1.0, nonUniform, latitudes); }, 200);
+  std::printf("  %-20s %8.3f ms  (naive baseline, Fig. 2a)\n", "non-uniform, naive", 1e3 * naive);
+  return 0;
+}

@@ -1,0 +1,249 @@
+// Bindings for basic shapes blended into NURBS (blending paper): G2 circles and shapes,
+// the C2 sextic conversion, and the sphere-zone blend with its naive baseline.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <Precision.hxx>
+#include <TopoDS_Shape.hxx>
+#include <cstdint>
+
+#include "bindings.hpp"
+#include "fairsplines/blend_shapes.hpp"
+#include "fairsplines/blend_surface.hpp"
+#include "fairsplines/errors.hpp"
+#include "fairsplines/g2_to_c2.hpp"
+#include "fairsplines/surfaces.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace fairsplines::python {
+
+namespace {
+
+ShapeFrame frameOf(const Eigen::Vector3d& origin, const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+  ShapeFrame f;
+  f.origin = origin;
+  f.x = x;
+  f.y = y;
+  f.z = x.cross(y);
+  f.check();
+  return f;
+}
+
+/// OCCT surface to the kernel's array layout (exact).
+BSplineSurface fromOcctSurface(const Handle(Geom_BSplineSurface)& s) {
+  BSplineSurface out;
+  out.degreeU = s->UDegree();
+  out.degreeV = s->VDegree();
+  out.nu = s->NbUPoles();
+  out.nv = s->NbVPoles();
+  out.periodicU = s->IsUPeriodic();
+  out.periodicV = s->IsVPeriodic();
+  out.poles.resize(static_cast<Eigen::Index>(out.nu) * out.nv, 3);
+  out.weights.resize(static_cast<Eigen::Index>(out.nu) * out.nv);
+  for (int i = 0; i < out.nu; ++i) {
+    for (int j = 0; j < out.nv; ++j) {
+      const gp_Pnt p = s->Pole(i + 1, j + 1);
+      out.poles.row(i * out.nv + j) << p.X(), p.Y(), p.Z();
+      out.weights[i * out.nv + j] = s->Weight(i + 1, j + 1);
+    }
+  }
+  out.knotsU.resize(s->NbUKnots());
+  out.multsU.resize(s->NbUKnots());
+  for (int k = 0; k < s->NbUKnots(); ++k) {
+    out.knotsU[k] = s->UKnot(k + 1);
+    out.multsU[k] = s->UMultiplicity(k + 1);
+  }
+  out.knotsV.resize(s->NbVKnots());
+  out.multsV.resize(s->NbVKnots());
+  for (int k = 0; k < s->NbVKnots(); ++k) {
+    out.knotsV[k] = s->VKnot(k + 1);
+    out.multsV[k] = s->VMultiplicity(k + 1);
+  }
+  return out;
+}
+
+CircleReparam methodOf(const std::string& name) {
+  if (name == "rho") return CircleReparam::Rho;
+  if (name == "sigma") return CircleReparam::Sigma;
+  if (name == "mixed") return CircleReparam::Mixed;
+  throw InputError("method must be 'rho', 'sigma' or 'mixed', not '" + name + "'");
+}
+
+const char* roleOf(TaggedPatch::Role r) {
+  return r == TaggedPatch::Role::Basic ? "basic" : r == TaggedPatch::Role::Transition ? "transition" : "freeform";
+}
+
+Handle(Geom_BSplineSurface) ringOf(const std::optional<BSplineSurface>& ring) {
+  return ring ? toOcct(*ring) : Handle(Geom_BSplineSurface)();
+}
+
+}  // namespace
+
+void bindBlend(py::module_& m) {
+  py::class_<G2CircleSpline>(m, "G2CircleSpline", "The circle pieces of eq. (2) with the scalars of eqs. (3)-(4).")
+      .def_readonly("theta", &G2CircleSpline::theta)
+      .def_readonly("alpha", &G2CircleSpline::alpha)
+      .def_readonly("w", &G2CircleSpline::w)
+      .def_readonly("beta", &G2CircleSpline::beta)
+      .def_readonly("gamma", &G2CircleSpline::gamma)
+      .def_readonly("closed", &G2CircleSpline::closed)
+      .def_readonly("cubic", &G2CircleSpline::cubic);
+  m.def("g2_circle", &g2Circle, "theta"_a);
+
+  py::class_<G2Surface>(m, "G2Surface", "Rational bicubic G2 patches of a basic shape (homogeneous Bézier rows).")
+      .def_readonly("nu", &G2Surface::nu)
+      .def_readonly("nv", &G2Surface::nv)
+      .def_readonly("bezier", &G2Surface::bezier)
+      .def_readonly("beta_u", &G2Surface::betaU)
+      .def_readonly("gamma_u", &G2Surface::gammaU)
+      .def_readonly("beta_v", &G2Surface::betaV)
+      .def_readonly("gamma_v", &G2Surface::gammaV)
+      .def_readonly("closed_u", &G2Surface::closedU)
+      .def_readonly("closed_v", &G2Surface::closedV)
+      .def("set_control", &G2Surface::setControl, "i"_a, "j"_a, "r"_a, "s"_a, "point"_a, "weight"_a)
+      .def(
+          "patch", [](const G2Surface& s, int i, int j) { return fromOcctSurface(patchToOcct(s, i, j)); }, "i"_a, "j"_a);
+  m.def(
+      "sphere_zone",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
+         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes) {
+        return sphereZone(frameOf(o, x, y), radius, longitudes, latitudes);
+      },
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a);
+  m.def(
+      "cylinder",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
+         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
+        return cylinder(frameOf(o, x, y), radius, angles, heights);
+      },
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "angles"_a, "heights"_a);
+  m.def(
+      "cone",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
+         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
+        return cone(frameOf(o, x, y), radius0, slope, angles, heights);
+      },
+      "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a);
+  m.def(
+      "torus",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
+         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV) {
+        return torus(frameOf(o, x, y), R, r, anglesU, anglesV);
+      },
+      "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a);
+
+  py::class_<C2SexticSpline>(m, "C2SexticSpline", "Sextic pieces, C2 in homogeneous space (Section 4.1).")
+      .def_readonly("bezier", &C2SexticSpline::bezier)
+      .def_readonly("beta", &C2SexticSpline::beta)
+      .def_readonly("closed", &C2SexticSpline::closed)
+      .def_readonly("first_piece", &C2SexticSpline::firstPiece)
+      .def("knots", &C2SexticSpline::knots);
+  m.def(
+      "circle_to_c2",
+      [](const G2CircleSpline& c, const std::string& method, const Eigen::VectorXd& betaT) {
+        return circleToC2(c, methodOf(method), betaT);
+      },
+      "circle"_a, "method"_a = "rho", "beta_t"_a = Eigen::VectorXd());
+
+  py::class_<BlendComplex>(m, "BlendComplex", "Tagged patches of a blend (Section 4.2).")
+      .def_readonly("knots_u", &BlendComplex::knotsU)
+      .def_readonly("knots_v", &BlendComplex::knotsV)
+      .def_readonly("pieces_u", &BlendComplex::piecesU)
+      .def_readonly("rows_basic", &BlendComplex::rowsBasic)
+      .def_readonly("rows_freeform", &BlendComplex::rowsFreeForm)
+      .def(
+          "patches",
+          [](const BlendComplex& c) {
+            py::list out;
+            for (const TaggedPatch& p : c.patches) {
+              out.append(py::make_tuple(roleOf(p.role), p.uPiece, p.vPiece, fromOcctSurface(patchToOcct(p))));
+            }
+            return out;
+          },
+          "[(role, u_piece, v_piece, BSplineSurface)] for every patch.")
+      .def(
+          "single_surface",
+          [](const BlendComplex& c, double tolerance) -> std::optional<BSplineSurface> {
+            try {
+              return fromOcctSurface(singleSurface(c, tolerance));
+            } catch (const InputError&) {
+              return std::nullopt;  // not a C2 tensor grid (e.g. the naive baseline)
+            }
+          },
+          "tolerance"_a = 1e-9, "One C2 Geom_BSplineSurface of the complex, or None where it is not C2.")
+      .def(
+          "shell_address",
+          [](const BlendComplex& c) {
+            // A heap TopoDS_Shape for occ_bridge.adopt_shape, which takes ownership.
+            return reinterpret_cast<std::uintptr_t>(new TopoDS_Shape(sewnShell(c)));
+          });
+  m.def(
+      "blend_sphere_zone",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
+         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes, const std::string& method,
+         const std::optional<BSplineSurface>& ring, bool bothDirections) {
+        return blendSphereZone(frameOf(o, x, y), radius, longitudes, latitudes, methodOf(method), ringOf(ring),
+                               bothDirections);
+      },
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "method"_a = "rho",
+      "ring"_a = py::none(), "both_directions"_a = true);
+  m.def(
+      "blend_sphere_zone_naive",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
+         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes, const std::optional<BSplineSurface>& ring) {
+        return blendSphereZoneNaive(frameOf(o, x, y), radius, longitudes, latitudes, ringOf(ring));
+      },
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "ring"_a = py::none());
+  m.def(
+      "make_bspline_surface",
+      [](const PointMatrix& poles, const Eigen::VectorXd& weights, const Eigen::VectorXd& knotsU,
+         const Eigen::VectorXd& knotsV, const Eigen::VectorXi& multsU, const Eigen::VectorXi& multsV, int degreeU,
+         int degreeV, bool periodicU, bool periodicV, int nu, int nv) {
+        BSplineSurface s;
+        s.poles = poles;
+        s.weights = weights;
+        s.knotsU = knotsU;
+        s.knotsV = knotsV;
+        s.multsU = multsU;
+        s.multsV = multsV;
+        s.degreeU = degreeU;
+        s.degreeV = degreeV;
+        s.periodicU = periodicU;
+        s.periodicV = periodicV;
+        s.nu = nu;
+        s.nv = nv;
+        toOcct(s);  // InputError now if OCCT rejects it
+        return s;
+      },
+      "poles"_a, "weights"_a, "knots_u"_a, "knots_v"_a, "mults_u"_a, "mults_v"_a, "degree_u"_a, "degree_v"_a,
+      "periodic_u"_a, "periodic_v"_a, "nu"_a, "nv"_a, "A kernel BSplineSurface from arrays (poles nu*nv x 3, row i*nv+j).");
+  m.def(
+      "blend_cone",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
+         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights, const std::string& method,
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+        return blendCone(frameOf(o, x, y), radius0, slope, angles, heights, methodOf(method), ringOf(ring),
+                         bothDirections, naive);
+      },
+      "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a, "method"_a = "rho",
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+  m.def(
+      "blend_torus",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
+         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV, const std::string& method,
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+        return blendTorus(frameOf(o, x, y), R, r, anglesU, anglesV, methodOf(method), ringOf(ring), bothDirections,
+                          naive);
+      },
+      "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+  m.def(
+      "ring_knots", [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
+      "angles"_a, "method"_a = "rho", "The u knots (one period) a free-form ring must have to join a shape.");
+}
+
+}  // namespace fairsplines::python

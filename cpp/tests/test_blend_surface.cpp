@@ -1,0 +1,268 @@
+// Section 4.2: sphere zone + free-form ring with a (6,5) transition strip, and the naive
+// baseline of Fig. 2a; judged by OCCT evaluation of the returned patches.
+#include <gtest/gtest.h>
+
+#include <Geom_BSplineSurface.hxx>
+#include <cmath>
+#include <BRepCheck_Analyzer.hxx>
+#include <GeomAbs_Shape.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <map>
+
+#include "fairsplines/blend_surface.hpp"
+#include "fairsplines/errors.hpp"
+
+using namespace fairsplines;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+Eigen::VectorXd vec(std::initializer_list<double> v) {
+  Eigen::VectorXd out(static_cast<Eigen::Index>(v.size()));
+  Eigen::Index i = 0;
+  for (double x : v) out[i++] = x;
+  return out;
+}
+
+Eigen::VectorXd nonUniformTurn() { return vec({0.0, 0.4, 1.5, 2.1, 3.9, 4.3, 5.2, 2 * kPi}); }
+Eigen::VectorXd uniformTurn(int n) { return Eigen::VectorXd::LinSpaced(n + 1, 0.0, 2 * kPi); }
+
+ShapeFrame tilted() {
+  ShapeFrame f;
+  f.origin << 1.0, -2.0, 0.5;
+  f.x = Eigen::Vector3d(1, 1, 0).normalized();
+  f.y = Eigen::Vector3d(-1, 1, 1).normalized();
+  f.z = f.x.cross(f.y);
+  return f;
+}
+
+struct SeamReport {
+  double worst = 0.0;       ///< largest relative jump over every seam
+  double worstAlongU = 0.0; ///< over the seams between neighbouring patches in u
+  double worstAcrossV = 0.0;
+  std::vector<double> alongU;  ///< per row of the complex
+};
+
+/// Position, first and second derivatives (and the mixed one) across every seam of the
+/// complex, OCCT D2 on both sides, derivatives scaled to the shared parameterization: in u
+/// by the interval ratio beta = h_k / h_{k-1}. Relative to the largest derivative there.
+SeamReport seams(const BlendComplex& c) {
+  std::map<std::pair<int, int>, Handle(Geom_BSplineSurface)> at;
+  for (const TaggedPatch& p : c.patches) at[{p.uPiece, p.vPiece}] = patchToOcct(p);
+  const int rows = c.rowsBasic + 1 + c.rowsFreeForm;
+  SeamReport report;
+  report.alongU.assign(rows, 0.0);
+  auto compare = [&](const Handle(Geom_BSplineSurface)& left, const Handle(Geom_BSplineSurface)& right, bool inU,
+                     double beta, double& bucket) {
+    for (int k = 0; k <= 12; ++k) {
+      const double t = k / 12.0;
+      gp_Pnt pl, pr;
+      gp_Vec lu, lv, luu, lvv, luv, ru, rv, ruu, rvv, ruv;
+      if (inU) {
+        left->D2(1.0, t, pl, lu, lv, luu, lvv, luv);
+        right->D2(0.0, t, pr, ru, rv, ruu, rvv, ruv);
+      } else {
+        left->D2(t, 1.0, pl, lv, lu, lvv, luu, luv);
+        right->D2(t, 0.0, pr, rv, ru, rvv, ruu, ruv);
+      }
+      const double scale = std::max({lu.Magnitude(), lv.Magnitude(), luu.Magnitude(), lvv.Magnitude(), luv.Magnitude()});
+      const double jumps[6] = {pl.Distance(pr), (ru - beta * lu).Magnitude(), (ruu - beta * beta * luu).Magnitude(),
+                               (rv - lv).Magnitude(), (rvv - lvv).Magnitude(), (ruv - beta * luv).Magnitude()};
+      for (double j : jumps) {
+        bucket = std::max(bucket, j / scale);
+        report.worst = std::max(report.worst, j / scale);
+      }
+    }
+  };
+  for (int k = 0; k < c.piecesU; ++k) {
+    const int kPrev = (k + c.piecesU - 1) % c.piecesU;
+    const double hPrev = c.knotsU[kPrev + 1] - c.knotsU[kPrev], h = c.knotsU[k + 1] - c.knotsU[k];
+    for (int v = 0; v < rows; ++v) {
+      if (c.closedU || k > 0) {
+        // Basic patches inside the zone only join G2 in v; in u they are C2 (sextic) for the
+        // blend, so every u-seam is checked with the C2 relation.
+        compare(at.at({kPrev, v}), at.at({k, v}), true, h / hPrev, report.alongU[v]);
+        report.worstAlongU = std::max(report.worstAlongU, report.alongU[v]);
+      }
+      // Across v: transition|basic and free-form|transition (scalar 1), inside the ring, and
+      // inside the basic shape where it was converted to C2 across too (scalar from knotsV).
+      if (v >= c.rowsBasic || (v > 0 && c.basicC2InV)) {
+        const double beta = (c.knotsV[v + 1] - c.knotsV[v]) / (c.knotsV[v] - c.knotsV[v - 1]);
+        compare(at.at({k, v - 1}), at.at({k, v}), false, beta, report.worstAcrossV);
+      }
+    }
+  }
+  return report;
+}
+
+double offSphere(const BlendComplex& c, const ShapeFrame& f, double R) {
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::Basic) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 16; ++a) {
+      for (int b = 0; b <= 16; ++b) {
+        const gp_Pnt q = s->Value(a / 16.0, b / 16.0);
+        worst = std::max(worst, std::abs((Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin).norm() - R));
+      }
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(SphereBlend, RhoComplexIsC2AcrossEverySeamAndTheSphereStaysExact) {
+  const ShapeFrame f = tilted();
+  const double R = 2.0;
+  const BlendComplex c = blendSphereZone(f, R, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}), CircleReparam::Rho);
+  EXPECT_EQ(c.piecesU, 21);
+  EXPECT_EQ(static_cast<int>(c.patches.size()), 21 * (3 + 1 + 1));
+  EXPECT_LT(offSphere(c, f, R), 1e-10 * R);
+  const SeamReport r = seams(c);
+  EXPECT_LT(r.worstAcrossV, 1e-8);
+  EXPECT_LT(r.worstAlongU, 1e-8);
+}
+
+TEST(SphereBlend, SigmaAndMixedComplexesAreC2Too) {
+  const ShapeFrame f = tilted();
+  for (CircleReparam method : {CircleReparam::Sigma, CircleReparam::Mixed}) {
+    const BlendComplex c =
+        blendSphereZone(f, 1.0, vec({0.0, 0.5, 1.0, 1.5, 2.0, 2.9, 3.3, 4.6, 5.5, 2 * kPi}), vec({-0.2, 0.3, 0.7}), method);
+    EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
+    EXPECT_LT(seams(c).worst, 1e-8);
+  }
+}
+
+TEST(SphereBlend, EightByFourZoneWithItsRing) {
+  // The benchmark's configuration (8 x 4 patches plus the ring), uniform partition.
+  const BlendComplex c = blendSphereZone(tilted(), 1.0, uniformTurn(8), vec({-0.8, -0.3, 0.1, 0.5, 0.9}));
+  EXPECT_LT(seams(c).worst, 1e-8);
+}
+
+TEST(SphereBlend, NaiveBaselineFailsTheSameCheckOnNonUniformPartitions) {
+  const BlendComplex c = blendSphereZoneNaive(tilted(), 1.0, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}));
+  // The naive strip is (3,5) over the arcs: its rows from the G2 sphere are not C2 along u.
+  const SeamReport r = seams(c);
+  EXPECT_LT(r.worstAcrossV, 1e-8);                 // Hermite data do match across the strip's two seams
+  EXPECT_GT(r.alongU[c.rowsBasic], 1e-3);          // but the strip itself is not C2 along u
+  EXPECT_LT(r.alongU[c.rowsBasic + 1], 1e-8);      // (the ring is)
+}
+
+TEST(SphereBlend, RingThatDoesNotMatchTheInterfaceRaisesInputError) {
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd lon = nonUniformTurn(), lat = vec({-0.6, 0.1, 0.5});
+  // A ring built on uniform knots does not match the non-uniform arcs.
+  const Handle(Geom_BSplineSurface) uniformRing =
+      defaultSphereRing(f, 1.0, lon, lat, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
+  try {
+    blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, uniformRing);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not match the interface"), std::string::npos);
+  }
+  EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 1.0, 2.0}), lat), InputError);                  // not a full turn
+  EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);                    // top at the pole
+}
+
+TEST(SphereBlend, BothDirectionsC2GiveOneC2Surface) {
+  const ShapeFrame f = tilted();
+  const double R = 1.5;
+  const Eigen::VectorXd lat = vec({-0.6, 0.1, 0.5, 0.8});
+  const BlendComplex c = blendSphereZone(f, R, nonUniformTurn(), lat, CircleReparam::Rho, nullptr, true);
+  ASSERT_TRUE(c.basicC2InV);
+  EXPECT_LT(offSphere(c, f, R), 1e-10 * R);
+  const SeamReport r = seams(c);
+  EXPECT_LT(r.worst, 1e-8);
+  const Handle(Geom_BSplineSurface) s = singleSurface(c);
+  EXPECT_EQ(s->Continuity(), GeomAbs_C2);
+  EXPECT_EQ(s->UDegree(), 6);
+  EXPECT_EQ(s->VDegree(), 6);
+  // The single surface is the complex: the zone part stays on the sphere.
+  double worst = 0.0;
+  for (int a = 0; a <= 60; ++a) {
+    for (int b = 0; b <= 30; ++b) {
+      const double u = c.knotsU[0] + (c.knotsU[c.piecesU] - c.knotsU[0]) * a / 60.0;
+      const double v = c.knotsV[0] + (c.knotsV[c.rowsBasic] - c.knotsV[0]) * b / 30.0;
+      const gp_Pnt q = s->Value(u, v);
+      worst = std::max(worst, std::abs((Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin).norm() - R));
+    }
+  }
+  EXPECT_LT(worst, 1e-9 * R);
+  // Only G2 across the latitudes, or the naive strip: no single C2 surface.
+  EXPECT_THROW(singleSurface(blendSphereZone(f, R, nonUniformTurn(), lat)), InputError);
+  EXPECT_THROW(singleSurface(blendSphereZoneNaive(f, R, nonUniformTurn(), lat)), InputError);
+}
+
+TEST(SphereBlend, PatchesSewIntoOneValidShell) {
+  const BlendComplex c = blendSphereZone(tilted(), 1.0, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}));
+  const TopoDS_Shape shell = sewnShell(c);
+  EXPECT_EQ(shell.ShapeType(), TopAbs_SHELL);
+  EXPECT_TRUE(BRepCheck_Analyzer(shell).IsValid());
+  int faces = 0;
+  for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) ++faces;
+  EXPECT_EQ(faces, static_cast<int>(c.patches.size()));
+}
+
+namespace {
+
+Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
+  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
+  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
+}
+
+template <class F>
+double offShape(const BlendComplex& c, F distance) {
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::Basic) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 12; ++a) {
+      for (int b = 0; b <= 12; ++b) worst = std::max(worst, std::abs(distance(s->Value(a / 12.0, b / 12.0))));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(ConeBlend, CylinderAndConeComplexesAreC2AndStayExact) {
+  const ShapeFrame f = tilted();
+  for (double slope : {0.0, -0.3, 0.4}) {
+    for (bool both : {false, true}) {
+      const BlendComplex c = blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}), CircleReparam::Rho,
+                                       nullptr, both);
+      EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
+                  const auto l = localOf(f, q);
+                  return (std::hypot(l.x(), l.y()) - (2.0 + slope * l.z())) / std::sqrt(1 + slope * slope);
+                }),
+                1e-10 * 4);
+      EXPECT_LT(seams(c).worst, 1e-8) << slope << " " << both;
+      if (both) {
+        EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2) << slope;
+      }
+    }
+    const BlendComplex naive = blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}),
+                                         CircleReparam::Rho, nullptr, false, true);
+    EXPECT_GT(seams(naive).alongU[naive.rowsBasic], 1e-3) << slope;
+  }
+}
+
+TEST(TorusBlend, TorusZoneComplexIsC2AndStaysExact) {
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd tube = vec({-1.0, -0.2, 0.4, 0.9});
+  for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma}) {
+    const BlendComplex c = blendTorus(f, 3.0, 1.0, nonUniformTurn(), tube, method, nullptr, true);
+    EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
+                const auto l = localOf(f, q);
+                return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
+              }),
+              1e-10 * 4);
+    EXPECT_LT(seams(c).worst, 1e-8);
+    EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  }
+  // A closed tube has no boundary to join.
+  EXPECT_THROW(blendTorus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})), InputError);
+}

@@ -1,0 +1,104 @@
+"""Basic shapes blended into NURBS with a curvature-continuous (6,5) transition (blending
+paper, Section 4.2), and the naive baseline of Fig. 2a.
+
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, longitudes, latitudes)
+    result = fw.blend_basic_shape(zone)          # default free-form ring
+    result.patches   # [(role, Part.BSplineSurface)], role 'basic', 'transition', 'freeform'
+    result.shell     # Part.Shell of all patches, sewn
+    result.surface   # one C2 Part.BSplineSurface of the complex (or None)
+
+Shapes of revolution over a full turn around their axis, joined at the end of their
+profile: SphereZone (top latitude), Cylinder and Cone (top height), Torus (last tube angle of
+an open range).
+"""
+from collections import namedtuple
+
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+from .kernel import _BRIDGE, surface_from_part, surface_to_part
+from .shapes import Cone, Cylinder, SphereZone, Torus
+
+BlendResult = namedtuple("BlendResult", "patches shell surface")
+BlendResult.__doc__ = (
+    "patches: [(role, Part.BSplineSurface)] with role 'basic', 'transition' or 'freeform'; "
+    "shell: the patches sewn into a Part.Shell; surface: one Part.BSplineSurface that OCCT "
+    "reports C2, or None where the complex is not C2 (the naive baseline)."
+)
+
+_METHODS = ("rho", "sigma", "mixed")
+
+
+def _check(shape, continuity, method):
+    if continuity == "C1":
+        raise NotImplementedError("the G1/C1 variant (Section 5, eta of Appendix 7.3) is not implemented yet")
+    if continuity != "C2":
+        raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
+    if method not in _METHODS:
+        raise InputError(f"method must be one of {_METHODS}, not {method!r}")
+    if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
+        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
+
+
+def _shell(complex_):
+    import Part
+
+    if _BRIDGE is not None:
+        return Part.__fromPythonOCC__(_BRIDGE.adopt_shape(complex_.shell_address()))
+    faces = [Part.Face(surface_to_part(s)) for _, _, _, s in complex_.patches()]
+    shell = Part.Shell(faces)
+    shell.sewShape()
+    return shell
+
+
+def _result(complex_, single=True):
+    patches = [(role, surface_to_part(s)) for role, _, _, s in complex_.patches()]
+    surface = complex_.single_surface() if single else None
+    return BlendResult(patches, _shell(complex_), surface_to_part(surface) if surface is not None else None)
+
+
+def _ring(shape, freeform):
+    return None if freeform is None else surface_from_part(freeform)
+
+
+def freeform_knots(shape, method="rho"):
+    """The u knots (one period) a free-form ring must have to join `shape` at its top: the
+    arc knots of the C2 circle, intervals in the ratios beta of the longitudes."""
+    _check(shape, "C2", method)
+    return _kernel.ring_knots(shape.around, method)
+
+
+def _complex(shape, freeform, method, naive):
+    frame = (shape.center, shape.x_axis, shape.y_axis)
+    ring = _ring(shape, freeform)
+    if isinstance(shape, SphereZone):
+        if naive:
+            return _kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring)
+        return _kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True)
+    if isinstance(shape, (Cylinder, Cone)):
+        radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
+        return _kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive)
+    return _kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
+                               ring, True, naive)
+
+
+def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho"):
+    """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
+    periodic-in-u, clamped-in-v Part.BSplineSurface with the knots of freeform_knots, its
+    first row at the interface), or to a default ring that continues the shape, with a C2
+    transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
+    or 'mixed' (Section 3)."""
+    _check(shape, continuity, method)
+    return _result(_complex(shape, freeform, method, False))
+
+
+def blend_naive(shape, freeform=None, continuity="C2"):
+    """The naive baseline of Fig. 2a: direct second-order Hermite interpolation of the G2
+    shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
+    the partition's beta do not match: its .surface is None."""
+    _check(shape, continuity, "rho")
+    return _result(_complex(shape, freeform, "rho", True), single=False)
+
+
+__all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots"]

@@ -1,0 +1,124 @@
+"""Basic shapes as G2 rational bicubic splines (blending paper, Section 2): tensor
+products of the circle pieces of eq. (2) around an axis with a profile, for arbitrary,
+non-uniform angle partitions (radians). Each shape gives its exact patches as
+Part.BSplineSurface objects and feeds fw.blend_basic_shape.
+
+    import math, freecad_workbench as fw
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, [0, 1, 2.5, 4, 2 * math.pi], [-0.5, 0.2, 0.7])
+    faces = [Part.Face(s) for s in zone.patches()]
+"""
+import numpy as np
+
+from . import _kernel
+from .basic import _frame, _vector3
+from .errors import InputError
+from .kernel import surface_to_part
+
+
+def _angles(values, name):
+    try:
+        a = np.ascontiguousarray([float(v) for v in values], dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a list of numbers (radians)") from None
+    return a
+
+
+class _Shape:
+    """A basic shape about an axis through `center` (frame: x_axis, axis)."""
+
+    def __init__(self, center, axis, x_axis):
+        self.center = _vector3(center, "center")
+        self.axis = _vector3(axis, "axis")
+        self.x_axis, self.y_axis = _frame(self.axis, x_axis)
+        self.axis = np.cross(self.x_axis, self.y_axis)
+
+    def _frame_args(self):
+        return self.center, self.x_axis, self.y_axis
+
+    def g2(self):
+        """The kernel's G2 control structure (homogeneous Bézier points, weights, scalars)."""
+        raise NotImplementedError
+
+    def patches(self):
+        """The shape's rational bicubic patches as Part.BSplineSurface objects, row by row
+        (u around the axis, v along the profile)."""
+        g2 = self.g2()
+        return [surface_to_part(g2.patch(i, j)) for i in range(g2.nu) for j in range(g2.nv)]
+
+
+class SphereZone(_Shape):
+    """Sphere zone (or dome, with a latitude of pi/2): longitudes around the axis,
+    latitudes in [-pi/2, pi/2], both increasing."""
+
+    def __init__(self, center, radius, longitudes, latitudes, axis=(0, 0, 1), x_axis=None):
+        super().__init__(center, axis, x_axis)
+        self.radius = float(radius)
+        self.longitudes = _angles(longitudes, "longitudes")
+        self.latitudes = _angles(latitudes, "latitudes")
+        self.g2()  # validate now: InputError names the problem
+
+    @property
+    def around(self):
+        """The angles around the axis."""
+        return self.longitudes
+
+    def g2(self):
+        return _kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
+
+
+class Cylinder(_Shape):
+    """Circular cylinder: angles around the axis, increasing heights along it."""
+
+    def __init__(self, center, radius, angles, heights, axis=(0, 0, 1), x_axis=None):
+        super().__init__(center, axis, x_axis)
+        self.radius = float(radius)
+        self.angles = _angles(angles, "angles")
+        self.heights = _angles(heights, "heights")
+        self.g2()
+
+    @property
+    def around(self):
+        return self.angles
+
+    def g2(self):
+        return _kernel.cylinder(*self._frame_args(), self.radius, self.angles, self.heights)
+
+
+class Cone(_Shape):
+    """Cone with radius radius0 + slope * z at height z along the axis (apex excluded)."""
+
+    def __init__(self, center, radius0, slope, angles, heights, axis=(0, 0, 1), x_axis=None):
+        super().__init__(center, axis, x_axis)
+        self.radius0, self.slope = float(radius0), float(slope)
+        self.angles = _angles(angles, "angles")
+        self.heights = _angles(heights, "heights")
+        self.g2()
+
+    @property
+    def around(self):
+        return self.angles
+
+    def g2(self):
+        return _kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
+
+
+class Torus(_Shape):
+    """Torus with 0 < minor_radius < major_radius: angles_u around the axis, angles_v
+    around the tube (0 = outer equator)."""
+
+    def __init__(self, center, major_radius, minor_radius, angles_u, angles_v, axis=(0, 0, 1), x_axis=None):
+        super().__init__(center, axis, x_axis)
+        self.major_radius, self.minor_radius = float(major_radius), float(minor_radius)
+        self.angles_u = _angles(angles_u, "angles_u")
+        self.angles_v = _angles(angles_v, "angles_v")
+        self.g2()
+
+    @property
+    def around(self):
+        return self.angles_u
+
+    def g2(self):
+        return _kernel.torus(*self._frame_args(), self.major_radius, self.minor_radius, self.angles_u, self.angles_v)
+
+
+__all__ = ["SphereZone", "Cylinder", "Cone", "Torus"]

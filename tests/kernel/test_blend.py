@@ -1,0 +1,166 @@
+"""Basic shapes and the sphere-zone blend through the macro API, judged by OCCT
+evaluation of the returned Part geometry."""
+import math
+import os
+
+import numpy as np
+import pytest
+
+import freecad_workbench as fw
+import FreeCAD
+import Part
+
+NON_UNIFORM = [0.0, 0.4, 1.5, 2.1, 3.9, 4.3, 5.2, 2 * math.pi]
+LATITUDES = [-0.6, 0.1, 0.5, 0.8]
+CENTER = (1.0, -2.0, 0.5)
+AXIS = (0.3, -0.2, 1.0)
+
+
+def samples(surface, n=12):
+    u0, u1, v0, v1 = surface.bounds()
+    for a in np.linspace(u0, u1, n):
+        for b in np.linspace(v0, v1, n):
+            yield surface.value(a, b)
+
+
+def test_sphere_zone_patches_lie_on_the_sphere():
+    zone = fw.shapes.SphereZone(CENTER, 2.5, NON_UNIFORM, LATITUDES, axis=AXIS)
+    patches = zone.patches()
+    assert len(patches) == 7 * 3
+    c = FreeCAD.Vector(*CENTER)
+    worst = max(abs((p - c).Length - 2.5) for s in patches for p in samples(s))
+    assert worst < 1e-10 * 2.5
+
+
+def test_cylinder_cone_torus_patches_lie_on_their_surfaces():
+    frame_axis = np.array(AXIS) / np.linalg.norm(AXIS)
+    c = np.array(CENTER)
+
+    def local(p):
+        d = np.array([p.x, p.y, p.z]) - c
+        z = d @ frame_axis
+        return np.linalg.norm(d - z * frame_axis), z
+
+    cyl = fw.shapes.Cylinder(CENTER, 3.0, [0.2, 1.0, 1.3, 2.9], [-1.0, 0.5, 4.0], axis=AXIS)
+    assert max(abs(local(p)[0] - 3.0) for s in cyl.patches() for p in samples(s)) < 1e-10 * 3
+    cone = fw.shapes.Cone(CENTER, 2.0, -0.3, NON_UNIFORM, [-1.0, 0.5, 4.0], axis=AXIS)
+    assert max(abs(local(p)[0] - (2.0 - 0.3 * local(p)[1])) for s in cone.patches() for p in samples(s)) < 1e-9
+    torus = fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, [0.0, 0.7, 2.0, 4.0, 2 * math.pi], axis=AXIS)
+    assert max(abs(math.hypot(local(p)[0] - 3.0, local(p)[1]) - 1.0) for s in torus.patches() for p in samples(s)) < 1e-9
+
+
+def test_bad_partitions_raise_input_error():
+    with pytest.raises(fw.InputError, match="angles must increase"):
+        fw.shapes.SphereZone(CENTER, 1.0, [0.0, 1.0, 1.0, 2 * math.pi], LATITUDES)
+    with pytest.raises(fw.InputError, match="positive weight"):
+        fw.shapes.Cylinder(CENTER, 1.0, [0.0, 4.3, 2 * math.pi], [0.0, 1.0])
+    with pytest.raises(fw.InputError):
+        fw.shapes.Torus(CENTER, 1.0, 2.0, NON_UNIFORM, NON_UNIFORM)
+
+
+def test_blend_is_c2_valid_and_keeps_the_sphere(tmp_path):
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES, axis=AXIS)
+    result = fw.blend_basic_shape(zone)
+    roles = [role for role, _ in result.patches]
+    assert {"basic", "transition", "freeform"} == set(roles)
+    c = FreeCAD.Vector(*CENTER)
+    worst = max(abs((p - c).Length - 2.0) for role, s in result.patches if role == "basic" for p in samples(s, 6))
+    assert worst < 1e-10 * 2.0
+    assert result.surface is not None
+    assert result.surface.Continuity == "C2"
+    assert result.shell.isValid()
+    assert len(result.shell.Faces) == len(result.patches)
+    path = str(tmp_path / "blend.step")
+    result.shell.exportStep(path)
+    back = Part.read(path)
+    assert len(back.Faces) == len(result.patches)
+    assert all(isinstance(f.Surface, Part.BSplineSurface) for f in back.Faces)
+
+
+def _strip_jump(patches, knots):
+    """Largest relative C2 jump between neighbouring transition patches along u (Part
+    getDN on both sides, derivatives scaled by the knot-interval ratio)."""
+    strip = [s for role, s in patches if role == "transition"]
+    worst = 0.0
+    n = len(strip)
+    for k in range(n):
+        left, right = strip[k - 1], strip[k]
+        beta = (knots[k + 1] - knots[k]) / (knots[k] - knots[k - 1]) if k > 0 else \
+            (knots[1] - knots[0]) / (knots[n] - knots[n - 1])
+        for v in np.linspace(0, 1, 7):
+            for order in (1, 2):
+                dl, dr = left.getDN(1.0, v, order, 0), right.getDN(0.0, v, order, 0)
+                scale = max(left.getDN(1.0, v, 1, 0).Length, left.getDN(1.0, v, 2, 0).Length)
+                worst = max(worst, (dr - dl * beta ** order).Length / scale)
+    return worst
+
+
+def test_naive_baseline_fails_the_seam_check_the_blend_passes():
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES, axis=AXIS)
+    naive = fw.blend_naive(zone)
+    assert naive.surface is None
+    assert naive.shell.isValid()
+    assert _strip_jump(naive.patches, fw.freeform_knots(zone, "sigma")) > 1e-3
+    sigma = fw.blend_basic_shape(zone, method="sigma")
+    assert _strip_jump(sigma.patches, fw.freeform_knots(zone, "sigma")) < 1e-8
+
+
+def test_user_ring_must_match_the_interface():
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES, axis=AXIS)
+    # The default ring, handed back as a user net, is accepted; a plain uniform one is not.
+    ring = [s for role, s in fw.blend_basic_shape(zone, method="sigma").patches if role == "freeform"]
+    assert ring
+    bad = Part.BSplineSurface()
+    poles = [[FreeCAD.Vector(math.cos(a), math.sin(a), z) for z in (2.0, 2.2, 2.4, 2.6)]
+             for a in np.linspace(0, 2 * math.pi, 7, endpoint=False)]
+    bad.buildFromPolesMultsKnots(poles, [1] * 8, [4, 4], list(range(8)), [0.0, 1.0], True, False, 3, 3)
+    with pytest.raises(fw.InputError, match="does not match the interface"):
+        fw.blend_basic_shape(zone, freeform=bad)
+
+
+@pytest.mark.parametrize("shape", [
+    fw.shapes.Cylinder(CENTER, 1.0, NON_UNIFORM, [0.0, 0.4, 1.0], axis=AXIS),
+    fw.shapes.Cone(CENTER, 1.5, -0.4, NON_UNIFORM, [0.0, 0.4, 1.0], axis=AXIS),
+    fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, [-1.0, -0.2, 0.4, 0.9], axis=AXIS),
+], ids=["cylinder", "cone", "torus"])
+def test_every_shape_blends_c2_and_naive_does_not(shape):
+    result = fw.blend_basic_shape(shape, method="sigma")
+    assert result.surface.Continuity == "C2"
+    assert result.shell.isValid()
+    knots = fw.freeform_knots(shape, "sigma")
+    assert _strip_jump(result.patches, knots) < 1e-8
+    naive = fw.blend_naive(shape)
+    assert naive.surface is None
+    assert _strip_jump(naive.patches, knots) > 1e-3
+
+
+def test_bad_blend_requests():
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES)
+    with pytest.raises(NotImplementedError, match="C1"):
+        fw.blend_basic_shape(zone, continuity="C1")
+    with pytest.raises(fw.InputError, match="continuity"):
+        fw.blend_basic_shape(zone, continuity="G7")
+    with pytest.raises(fw.InputError, match="full turn"):
+        fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 1.0, 2.0], [0.0, 1.0]))
+    with pytest.raises(fw.InputError, match="no boundary"):
+        fw.blend_basic_shape(fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, NON_UNIFORM))
+    with pytest.raises(fw.InputError, match="below pi/2"):
+        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]))
+
+
+def test_user_ring_on_the_interface_knots_blends_c2():
+    zone = fw.shapes.SphereZone((0, 0, 0), 1.0, NON_UNIFORM, LATITUDES)
+    knots = list(fw.freeform_knots(zone))
+    n = len(knots) - 1
+    angles = NON_UNIFORM[:-1]
+    # OCCT's periodic pole j is centred on knot j + 1: rotate by one (as the kernel does).
+    rows = [[FreeCAD.Vector(0.8 * math.cos(a), 0.8 * math.sin(a), 0.75 + 0.15 * j) for j in range(4)] for a in angles]
+    rows = rows[1:] + rows[:1]
+    ring = Part.BSplineSurface()
+    ring.buildFromPolesMultsKnots(rows, [1] * (n + 1), [4, 4], knots, [0.0, 1.0], True, False, 3, 3)
+    result = fw.blend_basic_shape(zone, freeform=ring)
+    assert result.surface.Continuity == "C2"
+    # the ring's poles are in the complex
+    freeform = [s for role, s in result.patches if role == "freeform"]
+    top = max(p.z for s in freeform for row in s.getPoles() for p in row)
+    assert abs(top - (0.75 + 0.45)) < 1e-12
