@@ -32,6 +32,7 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
         self.appendMenu("FairSplines", list(commands.COMMANDS))
         # Design with basic curves: its own toolbar; in the menu the kinds in a submenu.
         self.appendToolbar("FairSplines design", list(design_commands.DESIGN_COMMANDS))
+        self.appendMenu("FairSplines", ["Separator"])
         self.appendMenu(["FairSplines", "Basic curve"], list(design_commands.KIND_COMMANDS.values()))
         self.appendMenu("FairSplines", list(design_commands.DESIGN_COMMANDS[1:]))
 
