@@ -14,7 +14,6 @@ profile lies in a plane across Z, the in-plane direction nearest to Y through th
 A bad profile or axis keeps the last good shape with the message in `Status`.
 """
 import FreeCAD
-import Part
 
 from ..design import revolve_profile
 from ..errors import InputError

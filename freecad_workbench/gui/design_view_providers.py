@@ -50,12 +50,6 @@ class _ViewProvider:
     def make_panel(self, obj):
         return None
 
-    def doubleClicked(self, vobj):
-        return False  # nothing to edit but the properties
-
-    def setupContextMenu(self, vobj, menu):
-        pass
-
     def setEdit(self, vobj, mode=0):
         if mode != 0:
             return None  # Transform and the other modes: FreeCAD's own

@@ -10,7 +10,7 @@ import pytest
 
 import FreeCAD
 import Part
-import Sketcher  # noqa: F401
+import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
 
 import freecad_workbench as fw
 from freecad_workbench.features.basic_curve import KINDS
@@ -579,6 +579,7 @@ def test_profile_test_command_shows_zebra_stripes(scene, artifacts):
     assert isinstance(vp, ViewProviderProfileTest) and test.ViewObject.DisplayMode == "Zebra"
     assert "Zebra" in test.ViewObject.listDisplayModes()
     assert vp.zebra.vertex_count > 1000
+    assert vp.doubleClicked(test.ViewObject) is False and not gui().Control.activeDialog()  # nothing to edit
     # the sketch's own axis: its vertical (Y) axis, the surface of revolution of the design
     assert tuple(test.AxisDirection) == pytest.approx((0, 1, 0))
     for obj in (design, sketch):
@@ -607,6 +608,33 @@ def test_profile_test_command_shows_zebra_stripes(scene, artifacts):
     gui().updateGui()
     assert vp.meshed is not mesh_shape and test.Status == "ok"
     assert vp.zebra.vertex_count > 0 and count > 0
+
+
+def test_zebra_stripes_are_reflections_that_follow_the_view(scene, artifacts):
+    """The stripes are the reflection of an environment fixed to the viewer: turning the
+    camera about the axis of a surface of revolution shows the same picture (it is
+    symmetric), whereas stripes painted on the surface would turn with it."""
+    from freecad_workbench.features.profile_test import make_profile_test
+
+    doc, sketch, chain = scene
+    test = make_profile_test(doc, (sketch, chain[1]), axis_point=V(0, 0, 0), axis_direction=V(0, 1, 0))
+    assert test.Status == "ok" and test.ViewObject.DisplayMode == "Zebra"
+    sketch.ViewObject.Visibility = False
+    view = gui().getDocument(doc.Name).ActiveView
+    images = []
+    for angle in (0.0, 37.0):
+        view.setCameraOrientation(FreeCAD.Rotation(V(0, 1, 0), angle).multiply(FreeCAD.Rotation(V(1, 0, 0), -60)))
+        view.fitAll()
+        gui().updateGui()
+        path = os.path.join(artifacts, f"design_zebra_turned_{int(angle)}.png")
+        view.saveImage(path, 800, 600, "White")
+        from PIL import Image
+
+        images.append(np.asarray(Image.open(path).convert("L")).astype(int))
+    surface = images[0] < 250
+    assert surface.sum() > 20000 and (images[0][surface] < 40).sum() > 0.1 * surface.sum()
+    differ = (np.abs(images[0] - images[1]) > 100).sum()
+    assert differ < 0.03 * surface.sum(), (differ, surface.sum())
 
 
 KINK_VIEW = (0.0, 0.35, 1.0)  # across the axis (Y), a little along it: stripes cross the joins

@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 import FreeCAD
-import Part
 
 import freecad_workbench as fw
 from freecad_workbench.features.basic_curve import make_basic_curve
