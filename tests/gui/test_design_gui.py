@@ -278,6 +278,25 @@ def test_basic_curve_panel_cancel_restores_kind_and_dimensions(scene):
     assert not gui().Control.activeDialog()
 
 
+def test_rational_cubic_panel_edits_poles_and_weights_in_its_table(scene):
+    from freecad_workbench.features.basic_curve import make_basic_curve
+
+    doc, _, _ = scene
+    cubic = make_basic_curve(doc, "Rational cubic")
+    gui().getDocument(doc.Name).setEdit(cubic.Name, 0)
+    panel = cubic.ViewObject.Proxy.panel
+    table = panel.widgets["Poles"]
+    assert (table.rowCount(), table.columnCount()) == (4, 4)
+    table.item(1, 1).setText("20")
+    table.item(2, 3).setText("3")
+    assert cubic.Poles[1] == V(10, 20, 0) and list(cubic.Weights) == [1, 1, 3, 1]
+    curve = cubic.Shape.Edges[0].Curve
+    assert curve.getWeights() == [1, 1, 3, 1] and curve.getPole(2) == V(10, 20, 0)
+    panel.accept()
+    gui().updateGui()
+    assert doc.UndoNames[0] == "Edit basic curve"
+
+
 # --- design spline and mark points --------------------------------------------------------
 
 def test_design_spline_command_takes_selected_edges_in_pick_order(scene):
