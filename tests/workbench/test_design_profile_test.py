@@ -8,7 +8,7 @@ import pytest
 
 import FreeCAD
 import Part
-import Sketcher  # noqa: F401
+import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
 
 import freecad_workbench as fw
 from freecad_workbench.features.basic_curve import make_basic_curve
