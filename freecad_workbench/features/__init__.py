@@ -1,6 +1,21 @@
 """Parametric FreeCAD objects (FeaturePython proxies) and their make_<feature>(doc, ...)
 factories. Headless: nothing here imports the GUI at import time; a view provider is
 attached only when FreeCAD.GuiUp."""
+from .basic_curve import BasicCurveFeature, make_basic_curve
 from .csr_fit import CsrFit, make_csr_fit
+from .design_spline import DesignSpline, make_design_spline
+from .edit_polygon import EditPolygon, make_edit_polygon
+from .profile_test import ProfileTest, make_profile_test
 
-__all__ = ["CsrFit", "make_csr_fit"]
+__all__ = [
+    "BasicCurveFeature",
+    "CsrFit",
+    "DesignSpline",
+    "EditPolygon",
+    "ProfileTest",
+    "make_basic_curve",
+    "make_csr_fit",
+    "make_design_spline",
+    "make_edit_polygon",
+    "make_profile_test",
+]

@@ -37,6 +37,7 @@ import FreeCAD
 
 from .. import basic
 from ..errors import InputError
+from .base import FeatureProxy
 from .undo import undo_step
 
 KINDS = (
@@ -99,42 +100,33 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
-_GROUP = "Basic curve"
-_OUTPUT = 8  # App::Property::Output: setting it does not touch the object
 _DIMENSIONS = tuple(name for _, name, *_ in _PROPERTIES if name not in ("Kind", "Status", "Version"))
 
 
-class BasicCurveFeature:
+class BasicCurveFeature(FeatureProxy):
     """Proxy of a Part::FeaturePython holding one basic curve built from its dimensions."""
 
     Type = "BasicCurve"
     VERSION = 1
+    GROUP = "Basic curve"
+    PROPERTIES = _PROPERTIES
 
-    def __init__(self, obj):
-        obj.Proxy = self
-        ensure_properties(obj)
-        obj.Version = self.VERSION
+    def init_property(self, obj, name):
+        if name == "Kind":
+            obj.Kind = list(KINDS)
 
-    def onDocumentRestored(self, obj):
-        ensure_properties(obj)
-        if obj.Version < self.VERSION:
-            obj.Version = self.VERSION
+    def ensure_properties(self, obj):
+        super().ensure_properties(obj)
+        show_kind_properties(obj)
 
     def onChanged(self, obj, prop):
         if prop == "Kind":
             show_kind_properties(obj)
 
-    def execute(self, obj):
-        try:
-            local = local_curve(obj)
-            shape = local.to_part().toShape()
-        except Exception as exc:  # InputError, or OCCT refusing the geometry
-            _fail(obj, str(exc).strip() or type(exc).__name__)
-            return
+    def build(self, obj):
+        shape = local_curve(obj).to_part().toShape()
         shape.Placement = obj.Placement
-        obj.Shape = shape
-        if obj.Status != "ok":
-            obj.Status = "ok"
+        return shape
 
     def basic_curve(self, obj, placement=None):
         """The exact fw.basic curve of obj, placed by `placement` (default: where the
@@ -142,31 +134,6 @@ class BasicCurveFeature:
         if placement is None:
             placement = global_placement(obj)
         return build_curve(obj, placement)
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
-
-
-def ensure_properties(obj):
-    """Add any missing property with its default; keep the values of existing ones."""
-    for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name not in obj.PropertiesList:
-            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name == "Status" else 0)
-            if name == "Kind":
-                obj.Kind = list(KINDS)
-            if default is not None:
-                setattr(obj, name, default)
-        obj.setEditorMode(name, mode)
-    show_kind_properties(obj)
 
 
 def show_kind_properties(obj):
@@ -280,10 +247,3 @@ def make_basic_curve(doc, kind="Circle arc", placement=None, name=None, **dimens
             ViewProviderBasicCurve(obj.ViewObject)
         doc.recompute()
     return obj
-
-
-def _fail(obj, message):
-    """Error state: keep the last good shape, show the message, let recompute go on."""
-    if obj.Status != message:
-        obj.Status = message
-    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")

@@ -39,6 +39,7 @@ from .. import basic
 from ..design import design_spline, piece_marks
 from ..errors import InputError
 from .basic_curve import is_basic_curve
+from .base import FeatureProxy, set_if_changed
 from .undo import undo_step
 
 # Marks a new piece gets when none are given: with m = 5 intervals a conic stays exact on
@@ -63,65 +64,25 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
-_GROUP = "Design spline"
-_OUTPUT = 8  # App::Property::Output: setting it does not touch the object
-_OUTPUTS = ("Joins", "MarksAdded", "Status")
-
-
-class DesignSpline:
+class DesignSpline(FeatureProxy):
     """Proxy of a Part::FeaturePython holding fw.design_spline of its pieces and marks."""
 
     Type = "DesignSpline"
     VERSION = 1
+    GROUP = "Design spline"
+    PROPERTIES = _PROPERTIES
+    OUTPUTS = ("Joins", "MarksAdded", "Status")
 
-    def __init__(self, obj):
-        obj.Proxy = self
-        ensure_properties(obj)
-        obj.Version = self.VERSION
-
-    def onDocumentRestored(self, obj):
-        ensure_properties(obj)
-        if obj.Version < self.VERSION:
-            obj.Version = self.VERSION
-
-    def execute(self, obj):
+    def build(self, obj):
         labels = [piece_label(source, sub) for source, sub in piece_links(obj)]
         try:
             pieces, _ = design_inputs(obj)
             result = design_spline(pieces, join_tolerance=float(obj.JoinTolerance), details=True)
-        except Exception as exc:  # InputError, or a source the kernel or OCCT could not read
-            _fail(obj, _describe(exc, labels))
-            return
-        obj.Shape = result.curve.toShape()
-        joins, added = [str(j) for j in result.joins], [int(a) for a in result.marks_added]
-        if list(obj.Joins) != joins:
-            obj.Joins = joins
-        if list(obj.MarksAdded) != added:
-            obj.MarksAdded = added
-        if obj.Status != "ok":
-            obj.Status = "ok"
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
-
-
-def ensure_properties(obj):
-    """Add any missing property with its default; keep the values of existing ones."""
-    for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name not in obj.PropertiesList:
-            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name in _OUTPUTS else 0)
-            if default is not None:
-                setattr(obj, name, default)
-        obj.setEditorMode(name, mode)
+        except Exception as exc:
+            raise InputError(_describe(exc, labels)) from exc
+        set_if_changed(obj, "Joins", [str(j) for j in result.joins])
+        set_if_changed(obj, "MarksAdded", [int(a) for a in result.marks_added])
+        return result.curve.toShape()
 
 
 def is_design_spline(obj):
@@ -368,10 +329,3 @@ def _describe(exc, labels):
         if index < len(labels) and labels[index] not in message:
             message += f" (piece {index} is {labels[index]})"
     return message
-
-
-def _fail(obj, message):
-    """Error state: keep the last good shape, show the message, let recompute go on."""
-    if obj.Status != message:
-        obj.Status = message
-    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")

@@ -26,6 +26,7 @@ import FreeCAD
 import Part
 
 from ..errors import InputError
+from .base import FeatureProxy
 from .undo import undo_step
 
 _PROPERTIES = (
@@ -37,60 +38,21 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
-_GROUP = "Edit polygon"
-_OUTPUT = 8
-_OUTPUTS = ("Poles", "Status")
-
-
-class EditPolygon:
+class EditPolygon(FeatureProxy):
     """Proxy of a Part::FeaturePython: the source spline with some poles moved."""
 
     Type = "EditPolygon"
     VERSION = 1
+    GROUP = "Edit polygon"
+    PROPERTIES = _PROPERTIES
+    OUTPUTS = ("Poles", "Status")
 
-    def __init__(self, obj):
-        obj.Proxy = self
-        ensure_properties(obj)
-        obj.Version = self.VERSION
-
-    def onDocumentRestored(self, obj):
-        ensure_properties(obj)
-        if obj.Version < self.VERSION:
-            obj.Version = self.VERSION
-
-    def execute(self, obj):
-        try:
-            curve = edited_curve(obj)
-        except Exception as exc:
-            _fail(obj, str(exc).strip() or type(exc).__name__)
-            return
-        obj.Shape = curve.toShape()
+    def build(self, obj):
+        curve = edited_curve(obj)
         poles = curve.getPoles()
         if [tuple(p) for p in obj.Poles] != [tuple(p) for p in poles]:
             obj.Poles = poles
-        if obj.Status != "ok":
-            obj.Status = "ok"
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
-
-
-def ensure_properties(obj):
-    for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name not in obj.PropertiesList:
-            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name in _OUTPUTS else 0)
-            if default is not None:
-                setattr(obj, name, default)
-        obj.setEditorMode(name, mode)
+        return curve.toShape()
 
 
 def is_edit_polygon(obj):
@@ -198,9 +160,3 @@ def make_edit_polygon(doc, source, name="EditPolygon"):
             ViewProviderEditPolygon(obj.ViewObject)
         doc.recompute()
     return obj
-
-
-def _fail(obj, message):
-    if obj.Status != message:
-        obj.Status = message
-    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")

@@ -19,6 +19,7 @@ from ..design import revolve_profile
 from ..errors import InputError
 from .basic_curve import global_placement
 from .edit_polygon import source_edge
+from .base import FeatureProxy
 from .undo import undo_step
 
 _PROPERTIES = (
@@ -29,57 +30,16 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
-_GROUP = "Profile test"
-_OUTPUT = 8
-
-
-class ProfileTest:
+class ProfileTest(FeatureProxy):
     """Proxy of a Part::FeaturePython: the exact surface of revolution of its profile."""
 
     Type = "ProfileTest"
     VERSION = 1
+    GROUP = "Profile test"
+    PROPERTIES = _PROPERTIES
 
-    def __init__(self, obj):
-        obj.Proxy = self
-        ensure_properties(obj)
-        obj.Version = self.VERSION
-
-    def onDocumentRestored(self, obj):
-        ensure_properties(obj)
-        if obj.Version < self.VERSION:
-            obj.Version = self.VERSION
-
-    def execute(self, obj):
-        try:
-            surface = profile_surface(obj)
-            shape = surface.toShape()
-        except Exception as exc:
-            _fail(obj, str(exc).strip() or type(exc).__name__)
-            return
-        obj.Shape = shape
-        if obj.Status != "ok":
-            obj.Status = "ok"
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
-
-
-def ensure_properties(obj):
-    for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name not in obj.PropertiesList:
-            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name == "Status" else 0)
-            if default is not None:
-                setattr(obj, name, default)
-        obj.setEditorMode(name, mode)
+    def build(self, obj):
+        return profile_surface(obj).toShape()
 
 
 def is_profile_test(obj):
@@ -158,9 +118,3 @@ def make_profile_test(doc, profile, axis_point=None, axis_direction=None, name="
             ViewProviderProfileTest(obj.ViewObject)
         doc.recompute()
     return obj
-
-
-def _fail(obj, message):
-    if obj.Status != message:
-        obj.Status = message
-    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")

@@ -1,0 +1,90 @@
+"""What every FairSplines feature shares: the proxy's life cycle and the error policy.
+
+A feature proxy lists its properties; they are added only where missing, so documents
+from older versions load, and a Version property allows migration. `execute` calls the
+subclass's `build`; if that raises, the object keeps its last good shape, the message
+goes into the read-only Status property and the report view, and recompute goes on
+(the exception is never passed to FreeCAD). Headless: no GUI import.
+"""
+import FreeCAD
+
+OUTPUT = 8  # App::Property::Output: setting the property does not touch the object
+
+
+class FeatureProxy:
+    """Base of the FeaturePython proxies. Subclasses set Type, GROUP, PROPERTIES
+    ((type, name, tooltip, default, editor mode) tuples; a "Status" and a "Version"
+    property are expected among them), OUTPUTS (properties set by recompute) and
+    implement build(obj) -> Part.Shape."""
+
+    Type = "FeatureProxy"
+    VERSION = 1
+    GROUP = "FairSplines"
+    PROPERTIES = ()
+    OUTPUTS = ("Status",)
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self.ensure_properties(obj)
+        obj.Version = self.VERSION
+
+    def onDocumentRestored(self, obj):
+        """Add properties an older file lacks, then migrate."""
+        self.ensure_properties(obj)
+        self.migrate(obj)
+
+    def migrate(self, obj):
+        if obj.Version < self.VERSION:
+            obj.Version = self.VERSION  # nothing to convert yet
+
+    def ensure_properties(self, obj):
+        """Add any missing property with its default; keep the values of existing ones."""
+        for type_, name, tooltip, default, mode in self.PROPERTIES:
+            if name not in obj.PropertiesList:
+                obj.addProperty(type_, name, self.GROUP, tooltip, OUTPUT if name in self.OUTPUTS else 0)
+                self.init_property(obj, name)
+                if default is not None:
+                    setattr(obj, name, default)
+            obj.setEditorMode(name, mode)
+
+    def init_property(self, obj, name):
+        """Hook for a new property that needs more than a default (e.g. an enumeration)."""
+
+    def build(self, obj):
+        raise NotImplementedError
+
+    def execute(self, obj):
+        try:
+            shape = self.build(obj)
+        except Exception as exc:  # InputError, or a source the kernel or OCCT could not read
+            fail(obj, str(exc).strip() or type(exc).__name__)
+            return
+        obj.Shape = shape
+        set_if_changed(obj, "Status", "ok")
+
+    # FreeCAD 0.20 stores a proxy with __getstate__/__setstate__, older versions with
+    # dumps/loads. The proxies keep everything in properties.
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+def set_if_changed(obj, name, value):
+    """Set a property only when its value changes (no needless touch)."""
+    current = getattr(obj, name)
+    if (list(current) if isinstance(current, (list, tuple)) else current) != value:
+        setattr(obj, name, value)
+
+
+def fail(obj, message):
+    """Error state: keep the last good shape, show the message, let recompute go on."""
+    set_if_changed(obj, "Status", message)
+    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")
