@@ -1,4 +1,5 @@
 """Locating FreeCAD's Python modules when running outside FreeCAD."""
+import importlib
 import os
 import sys
 
@@ -9,14 +10,14 @@ def ensure_freecad_path():
     """Make FreeCAD importable from a plain interpreter (Debian's layout first) and
     import it: FreeCAD must be initialised before ``Part`` is imported, and before the
     kernel loads the OpenCASCADE libraries they share."""
-    try:
-        import FreeCAD  # noqa: F401
-        return
-    except ImportError:
-        pass
-    for path in _CANDIDATES:
-        if os.path.exists(os.path.join(path, "FreeCAD.so")):
+    for path in (None,) + _CANDIDATES:
+        if path is not None:
+            if not os.path.exists(os.path.join(path, "FreeCAD.so")):
+                continue
             if path not in sys.path:
                 sys.path.append(path)
-            import FreeCAD  # noqa: F401,F811
+        try:
+            importlib.import_module("FreeCAD")
             return
+        except ImportError:
+            continue

@@ -13,7 +13,6 @@ an open range).
 """
 from collections import namedtuple
 
-import numpy as np
 
 from . import _kernel
 from .errors import InputError
