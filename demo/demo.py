@@ -7,8 +7,8 @@ Writes into $FAIRSPLINES_OUT (default: out/demo):
   fairsplines_demo.FCStd   the document (open it in FreeCAD)
   fig2_curvature.png       curvature against arc length: csr-spline and classic interpolation
   fig2_curves.png          the curves with the samples and their curvature combs
-  design_curvature.png     design with basic curves (Fig. 14): the quarter circle and the
-                           line it touches, joined C2, and the exact conic pieces
+  design_curvature.png     design with basic curves (Figs. 14 and 10): curvature plots
+  blend_patches.png        a sphere zone blended C2 into a bicubic ring (blending paper)
   summary.txt              the measured figures
 """
 import math
@@ -22,7 +22,7 @@ import Part
 import Points
 
 import freecad_workbench as fw
-from freecad_workbench.features.csr_fit import make_csr_fit
+from freecad_workbench.features import make_basic_curve, make_csr_fit, make_design_spline, make_profile_test
 from freecad_workbench.gui.comb import comb_lines
 from freecad_workbench.gui.plot import curvature_plot
 
@@ -71,37 +71,85 @@ def picture_of_curves(path, samples, curves):
 
 
 def design_with_basic_curves(doc, out, lines):
-    """Fig. 14 and Fig. 10 situations: basic curves with marks to one C2 NURBS; the
-    profile revolved exactly (the paper's profile test)."""
-    quarter = fw.basic.CircleArc((0, 0, 0), 1.0, 0.0, math.pi / 2)
-    line = fw.basic.LineSegment((0, 1, 0), (-2, 1, 0))
+    """Fig. 14 as parametric objects (BasicCurve pieces, a DesignSpline with marks, its
+    ProfileTest surface of revolution), and Fig. 10 (semi-circle and semi-ellipse apart,
+    joined by an edge) through the macro API."""
+    quarter = make_basic_curve(doc, "Circle arc", name="QuarterCircle", Radius=1.0, StartAngle=0.0, EndAngle=90.0)
+    line = make_basic_curve(doc, "Line segment", name="TouchingLine", Start=FreeCAD.Vector(0, 1, 0),
+                            End=FreeCAD.Vector(-2, 1, 0))
     marks = [0.25, 0.5, 0.75]
-    design = fw.design_spline([(quarter, marks), (line, marks)], details=True)
-    add_shape(doc, "QuarterCircle", quarter.to_part().toShape(), (0.2, 0.2, 0.8))
-    add_shape(doc, "Line", line.to_part().toShape(), (0.2, 0.2, 0.8))
-    add_shape(doc, "DesignSpline", design.curve.toShape(), (0.0, 0.0, 0.0))
-    surface = fw.revolve_profile(design.curve, (0, -1.5, 0), (1, 0, 0))
-    add_shape(doc, "ProfileTest", surface.toShape(), (0.7, 0.7, 0.7))
-    # Semi-circle joined to a semi-ellipse apart from it (Fig. 10): an edge between them.
-    circle = fw.basic.CircleArc((4, 0, 0), 1.0, -math.pi / 2, math.pi / 2)
-    ellipse = fw.basic.EllipseArc((3.4, 0, 0), 1.6, 1.0, math.pi / 2, 3 * math.pi / 2)
-    fig10 = fw.design_spline([(circle, [0.2, 0.4, 0.6, 0.8]), (ellipse, [0.2, 0.4, 0.6, 0.8])], details=True)
+    design = make_design_spline(doc, [(quarter, marks), (line, marks)], name="DesignSpline")
+    profile = make_profile_test(doc, design, axis_point=FreeCAD.Vector(0, -1.5, 0),
+                                axis_direction=FreeCAD.Vector(1, 0, 0), name="ProfileTest")
+    doc.recompute()
+    for obj in (quarter, line, design, profile):
+        if obj.Status != "ok":
+            raise SystemExit(f"demo: {obj.Label} failed: {obj.Status}")
+    curve = design.Shape.Edges[0].Curve
+    circle = fw.basic.CircleArc((0, 0, 0), 1.0, 0.0, math.pi / 2)
+    details = fw.design_spline([(circle, marks), (fw.basic.LineSegment((0, 1, 0), (-2, 1, 0)), marks)], details=True)
+    (t0, scale), u = details.ranges[0], details.marks[0]
+    exact = max(abs(curve.value(t0 + scale * x).Length - 1.0) for x in np.linspace(0, u[-3], 200))
+
+    semicircle = fw.basic.CircleArc((4, 0, 0), 1.0, -math.pi / 2, math.pi / 2)
+    semiellipse = fw.basic.EllipseArc((3.4, 0, 0), 1.6, 1.0, math.pi / 2, 3 * math.pi / 2)
+    fig10 = fw.design_spline([(semicircle, [0.2, 0.4, 0.6, 0.8]), (semiellipse, [0.2, 0.4, 0.6, 0.8])],
+                             details=True)
     add_shape(doc, "CircleEllipseDesign", fig10.curve.toShape(), (0.0, 0.0, 0.0))
 
-    (t0, scale), = design.ranges[:1]
-    u = design.marks[0]
-    exact = max(abs(design.curve.value(t0 + scale * x).Length - 1.0) for x in np.linspace(0, u[-3], 200))
     lines += ["", "Design with basic curves (Fig. 14: quarter circle + touching line, 3 marks each)",
-              f"  joins: {design.joins}, continuity {design.curve.Continuity}, "
-              f"curvature sign changes {fw.curvature_sign_changes(design.curve)}",
+              f"  joins: {list(design.Joins)}, continuity {curve.Continuity}, "
+              f"curvature sign changes {fw.curvature_sign_changes(curve)}",
               f"  circle piece kept exact: largest |radius - 1| up to its second last mark = {exact:.1e}",
+              f"  profile test: exact surface of revolution, {profile.Shape.Faces[0].Surface.NbUPoles} x "
+              f"{profile.Shape.Faces[0].Surface.NbVPoles} poles",
               f"  Fig. 10 circle + ellipse: joins {fig10.joins}, continuity {fig10.curve.Continuity}, "
               f"curvature sign changes {fw.curvature_sign_changes(fig10.curve)}"]
     curvature_plot(
-        [(design.curve, "quarter circle + line, C2 design"), (fig10.curve, "semi-circle + semi-ellipse (Fig. 10)")],
+        [(curve, "quarter circle + line, C2 design"), (fig10.curve, "semi-circle + semi-ellipse (Fig. 10)")],
         path=os.path.join(out, "design_curvature.png"),
         title="Design with basic curves: curvature against arc length",
     )
+
+
+def blended_sphere_zone(doc, out, lines):
+    """A sphere zone of 8 x 4 non-uniform patches joined C2 to a bicubic ring by a (6,5)
+    transition strip (blending paper, Section 4.2), against the naive Hermite strip."""
+    longitudes = np.cumsum(np.r_[0.0, np.linspace(0.6, 1.0, 8)])
+    longitudes = longitudes / longitudes[-1] * 2 * math.pi
+    latitudes = np.radians([-40.0, -15.0, 5.0, 20.0, 40.0])
+    zone = fw.shapes.SphereZone((0, 0, 12), 3.0, longitudes, latitudes)
+    blended = fw.blend_basic_shape(zone)
+    naive = fw.blend_naive(zone)
+    obj = doc.addObject("Part::Feature", "BlendedSphereZone")
+    obj.Shape = blended.shell
+    roles = {}
+    for role, _ in blended.patches:
+        roles[role] = roles.get(role, 0) + 1
+    lines += ["", "Sphere zone blended C2 into a bicubic ring (8 x 4 non-uniform patches)",
+              f"  patches: {roles}, shell valid: {blended.shell.isValid()}, "
+              f"single surface: {blended.surface.Continuity if blended.surface else None}",
+              f"  naive baseline single surface: {naive.surface}"]
+    picture_of_blend(os.path.join(out, "blend_patches.png"), blended)
+
+
+def picture_of_blend(path, blended):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(7, 6), dpi=100)
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot(1, 1, 1, projection="3d")
+    colors = {"basic": "tab:blue", "transition": "tab:orange", "freeform": "tab:green"}
+    for role, surface in blended.patches:
+        u0, u1, v0, v1 = surface.bounds()
+        grid = np.array([[tuple(surface.value(u, v)) for v in np.linspace(v0, v1, 6)] for u in np.linspace(u0, u1, 6)])
+        ax.plot_surface(grid[..., 0], grid[..., 1], grid[..., 2], color=colors.get(role, "grey"), alpha=0.8,
+                        linewidth=0.2, edgecolor="k")
+    ax.set_title("Sphere zone (blue), (6,5) transition (orange), bicubic ring (green)")
+    ax.set_box_aspect((1, 1, 0.8))
+    fig.tight_layout()
+    fig.savefig(path)
 
 
 def main():
@@ -144,6 +192,7 @@ def main():
     lines += ["", f"csr-spline continuity: {csr_curve.Continuity}, poles: {csr_curve.NbPoles}"]
 
     design_with_basic_curves(doc, out, lines)
+    blended_sphere_zone(doc, out, lines)
     doc.recompute()
 
     path_doc = os.path.join(out, "fairsplines_demo.FCStd")
@@ -161,7 +210,7 @@ def main():
     with open(os.path.join(out, "summary.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png and summary.txt in {out}")
+    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png, blend_patches.png and summary.txt in {out}")
     FreeCAD.closeDocument(doc.Name)
 
 
