@@ -41,7 +41,10 @@ run: install
 bench: build
 	$(BUILD)/bench/bench_csr
 	$(BUILD)/bench/bench_design
+	$(BUILD)/bench/bench_blend
 	$(PYTHON) bench/bench_handover.py
+	$(PYTHON) bench/bench_design_recompute.py
+	$(PYTHON) bench/bench_blend.py
 
 clean:
 	rm -rf $(BUILD) $(OUT) freecad_workbench/_kernel*.so
