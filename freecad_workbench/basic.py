@@ -292,6 +292,8 @@ def from_edge(edge):
         return LineSegment(edge.valueAt(t0), edge.valueAt(t1))
     if isinstance(curve, Part.BSplineCurve) or isinstance(curve, Part.BezierCurve):
         raise InputError("a B-spline or Bézier edge is not a basic curve: use it as data for the csr fit")
+    if isinstance(curve, (Part.Circle, Part.Ellipse)) and edge.isClosed():
+        raise InputError(f"a full {type(curve).__name__.lower()} cannot be one piece: use two arcs of it")
     normal, x_axis = getattr(curve, "Axis", None), getattr(curve, "XAxis", None)
     if isinstance(curve, Part.Circle):
         return CircleArc(curve.Center, curve.Radius, t0, t1, normal, x_axis)

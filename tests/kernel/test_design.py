@@ -197,6 +197,7 @@ BAD = [
     (lambda a: fw.design_spline([(a,)]), "piece 0 must be a pair"),
     (lambda a: fw.design_spline([(a, [0.5])], join_tolerance=-1), "must not be negative"),
     (lambda a: fw.design_spline([(Part.BSplineCurve().toShape(), [0.5])]), "not a basic curve"),
+    (lambda a: fw.basic.from_edge(Part.makeCircle(2.0)), "a full circle cannot be one piece"),
     (lambda a: fw.basic.CircleArc((0, 0, 0), 0.0, 0, 1), "degenerate circle arc"),
     (lambda a: fw.basic.CircleArc((0, 0, 0), 1.0, 1, 1), "degenerate circle arc"),
     (lambda a: fw.basic.EllipseArc((0, 0, 0), 1.0, -1, 0, 1), "degenerate ellipse arc"),
