@@ -15,9 +15,11 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 struct Run {
-  std::vector<double> seconds;  // per condition (best of the repeats), successes only
-  std::vector<double> variation;  // curvatureVariation of each result (NaN: no result)
-  int successes = 0;
+  std::vector<double> seconds;     // per condition, best of the repeats
+  std::vector<double> solved;      // the same, for the conditions solved
+  std::vector<double> variation;   // curvatureVariation of each result (NaN: no result)
+  std::vector<double> iterations;  // Newton iterations or grid points tried, when solved
+  int successes = 0, boundary = 0;
 };
 
 Run run(const std::vector<test::EndCondition>& ends, MonotoneMethod method, int repeats) {
@@ -39,6 +41,11 @@ Run run(const std::vector<test::EndCondition>& ends, MonotoneMethod method, int 
     out.seconds.push_back(best);
     out.variation.push_back(ok ? curvatureVariation(result.curve) : std::nan(""));
     out.successes += ok;
+    if (ok) {
+      out.solved.push_back(best);
+      out.iterations.push_back(result.iterations);
+      out.boundary += result.boundary;
+    }
   }
   return out;
 }
@@ -59,9 +66,13 @@ int main() {
   const Run fair = run(ends, MonotoneMethod::Fairest, 3);
   const Run grid = run(ends, MonotoneMethod::PaperGrid, 1);  // milliseconds: one run is enough
   const double tf = median(fair.seconds), tg = median(grid.seconds);
-  std::printf("%-28s %16s %14s\n", "method", "median [us]", "success");
-  std::printf("%-28s %16.2f %13.1f%%\n", "fairest (analytic centre)", tf * 1e6, 100.0 * fair.successes / count);
-  std::printf("%-28s %16.2f %13.1f%%\n", "paper's grid (step 0.02)", tg * 1e6, 100.0 * grid.successes / count);
+  std::printf("%-27s %12s %14s %9s %16s\n", "method", "median [us]", "median solved", "success", "median iterations");
+  std::printf("%-27s %12.2f %14.2f %8.1f%% %16.0f\n", "fairest (analytic centre)", tf * 1e6, median(fair.solved) * 1e6,
+              100.0 * fair.successes / count, median(fair.iterations));
+  std::printf("%-27s %12.2f %14.2f %8.1f%% %16.0f\n", "paper's grid (step 0.02)", tg * 1e6, median(grid.solved) * 1e6,
+              100.0 * grid.successes / count, median(grid.iterations));
+  std::printf("\n(median [us]: over all %d conditions; median solved: over the ones the method solved;\n"
+              " iterations: Newton steps, or grid points tried)\n", count);
   std::printf("\nratio of medians (grid / fairest): %.0fx\n", tg / tf);
   int gridOnly = 0;
   std::vector<double> ratios;
@@ -71,6 +82,7 @@ int main() {
     if (f && g) ratios.push_back(fair.variation[i] / grid.variation[i]);
   }
   std::printf("conditions the grid solves and the fairest does not: %d\n", gridOnly);
+  std::printf("fairest results on the family's boundary (the parabola, no interior): %d\n", fair.boundary);
   std::printf("curvature variation L^3 int (dkappa/ds)^2 ds, fairest / grid, median over both solved: %.3f\n",
               median(ratios));
   return gridOnly == 0 && fair.successes == count ? 0 : 1;

@@ -244,8 +244,11 @@ std::vector<Arc> bezierArcs(const PlanarCurve& c) {
 /// The polynomials of a span: B (direction of P'), its derivatives, W, and N (sign of kappa').
 struct SpanPolys {
   Poly bx, by, b1x, b1y, w, speed2, n;
-  double scale = 0.0;  // largest coefficient of the two terms of N
+  double scale = 0.0;  // bound of the two terms of N from their factors' coefficients
 };
+
+/// max_t |(x(t), y(t))| <= the largest coefficient norm (convex hull property).
+double bound(const Poly& x, const Poly& y) { return (x.array().square() + y.array().square()).sqrt().maxCoeff(); }
 
 SpanPolys spanPolys(const Arc& arc) {
   SpanPolys s;
@@ -266,16 +269,26 @@ SpanPolys spanPolys(const Arc& arc) {
   const Poly crossB2 = sub(mul(bx, b2y), mul(by, b2x));   // B x B''
   const Poly dotB1 = mul(bx, b1x) + mul(by, b1y);         // B . B'
   s.speed2 = mul(bx, bx) + mul(by, by);                   // |B|^2
+  // The scale bounds the two terms by their factors, each factor at least as large as the
+  // span's coordinates X allow (a derivative of degree-d data grows by up to 2d per order),
+  // so rounding of the poles, and N vanishing by cancellation (a line, a circle), stay below it.
+  const double X = std::max(arc.x.cwiseAbs().maxCoeff(), arc.y.cwiseAbs().maxCoeff());
+  const double growth = 2.0 * static_cast<double>(bx.size());
+  const double floorB = growth * X * (arc.rational ? arc.w.cwiseAbs().maxCoeff() : 1.0);
+  const double mB = std::max(bound(bx, by), floorB), mB1 = std::max(bound(b1x, b1y), growth * floorB),
+               mB2 = std::max(bound(b2x, b2y), growth * growth * floorB);
   Poly first, second;
   if (arc.rational) {
     first = mul(add(2.0 * mul(w1, crossB1), mul(arc.w, crossB2)), s.speed2);
     second = 3.0 * mul(mul(arc.w, crossB1), dotB1);
+    const double mW = arc.w.cwiseAbs().maxCoeff(), mW1 = w1.cwiseAbs().maxCoeff();
+    s.scale = (2.0 * mW1 * mB * mB1 + mW * mB * mB2) * mB * mB + 3.0 * mW * mB * mB * mB1 * mB1;
   } else {
     first = mul(crossB2, s.speed2);      // (P' x P''') |P'|^2
     second = 3.0 * mul(crossB1, dotB1);  // 3 (P' x P'') (P' . P'')
+    s.scale = mB * mB2 * mB * mB + 3.0 * mB * mB * mB1 * mB1;
   }
   s.n = sub(first, second);
-  s.scale = std::max(first.cwiseAbs().maxCoeff(), second.cwiseAbs().maxCoeff());
   s.bx = std::move(bx);
   s.by = std::move(by);
   s.b1x = b1x;
@@ -371,6 +384,9 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol) {
   cert.kappaStart = cert.spans.front().kappa0;
   cert.kappaEnd = cert.spans.back().kappa1;
 
+  // Curvatures below 1e-12 / size are zero when compared at joints.
+  const Eigen::Vector2d lo = curve.poles.colwise().minCoeff(), hi = curve.poles.colwise().maxCoeff();
+  const double kappaFloor = 1e-12 / std::max((hi - lo).norm(), 1e-300);
   std::string problem;  // the first reason that makes the curve non-monotone
   for (size_t i = 0; i < cert.spans.size() && problem.empty(); ++i) {
     const SpanCertificate& s = cert.spans[i];
@@ -394,7 +410,7 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol) {
       break;
     }
     const double jump = right.kappa0 - left.kappa1;
-    const double jumpTol = 1e-9 * std::max({std::abs(left.kappa1), std::abs(right.kappa0), 1e-300});
+    const double jumpTol = 1e-9 * std::max(std::abs(left.kappa1), std::abs(right.kappa0)) + kappaFloor;
     if (jump > jumpTol && !jumpUp) {
       jumpUp = true;
       jumpUpAt = "the curvature jumps up from " + num(left.kappa1, 6) + " to " + num(right.kappa0, 6) + " at u = " + num(u, 6);
@@ -491,10 +507,9 @@ PlanarCurve planarCurve(const BSplineCurve& input) {
 // ---------------------------------------------------------------------------------------
 // Fair location (Fig. 3) and Algorithm 1.
 
-/// Is q in the fair location of A (= C^2_{j-3}) and D (= C^1_{j-2}), up to tol?
-bool inFairLocation(const Vec2& q, const Vec2& A, const Vec2& D, double tol) {
-  const double s = tol * (A.squaredNorm() + D.norm() * q.norm() + q.squaredNorm());
-  return cross(D, q) >= -s && cross(q, A) >= -s && q.dot(q - A) <= s;
+/// Is q in the fair location of A (= C^2_{j-3}) and D (= C^1_{j-2}), up to slack (squared length)?
+bool inFairLocation(const Vec2& q, const Vec2& A, const Vec2& D, double slack) {
+  return cross(D, q) >= -slack && cross(q, A) >= -slack && q.dot(q - A) <= slack;
 }
 
 /// Nearest point of the fair location: the wedge between rays OD and OA, inside the circle
@@ -995,12 +1010,16 @@ SegmentCheck checkSegment(const Eigen::Vector2d c[4], const double u[6], double 
   // Eq. (3): C^1_{j-3..j-1}; eq. (5): C^2_{j-3..j-2} (local knots u = t_{j-2}..t_{j+3}).
   const Vec2 D0 = 3.0 / (u[3] - u[0]) * V0, D1 = 3.0 / (u[4] - u[1]) * V1, D2 = 3.0 / (u[5] - u[2]) * V2;
   const Vec2 E0 = 2.0 / (u[3] - u[1]) * (D1 - D0), E1 = 2.0 / (u[4] - u[2]) * (D2 - D1);
-  // Local frame: x along the first control vector; y its left normal.
+  // Local frame: x along the first control vector; y its left normal. Comparisons are
+  // relative to the segment's largest derivative control point (rounding of a vanishing C^2
+  // must not count as leaving the quadrant).
   const Vec2 fx = V0 / n0, fy(-fx.y(), fx.x());
   const Vec2* points[4] = {&D1, &D2, &E0, &E1};
+  const double scale = std::max({D0.norm(), D1.norm(), D2.norm(), E0.norm(), E1.norm()});
+  const double s = tol * scale, s2 = tol * scale * scale;
   bool above = false, below = false;
   for (const Vec2* p : points) {
-    const double y = p->dot(fy), s = tol * p->norm();
+    const double y = p->dot(fy);
     above = above || y > s;
     below = below || y < -s;
   }
@@ -1010,7 +1029,6 @@ SegmentCheck checkSegment(const Eigen::Vector2d c[4], const double u[6], double 
   r.lemma1 = true;
   for (int k = 0; k < 4; ++k) {
     const Vec2 p = local(*points[k]);
-    const double s = tol * p.norm();
     if (p.x() < -s || p.y() < -s) {
       r.lemma1 = false;
       r.offQuadrant = k;
@@ -1019,17 +1037,20 @@ SegmentCheck checkSegment(const Eigen::Vector2d c[4], const double u[6], double 
   }
   r.turn = r.lemma1 ? turn : 0;
   // Lemma 2: angle O C^2_{j-2} C^2_{j-3} >= 90 deg, i.e. e1 . (e1 - e0) <= 0.
-  r.angle = e1.squaredNorm() == 0.0 ? kPi : std::atan2(std::abs(cross(-e1, e0 - e1)), (-e1).dot(e0 - e1));
-  r.lemma2 = e1.dot(e1 - e0) <= tol * e0.squaredNorm();
+  // (pi when C^2_{j-2} = O, pi/2 when C^2_{j-2} = C^2_{j-3}: on the circle)
+  r.angle = e1.squaredNorm() == 0.0                 ? kPi
+            : (e0 - e1).norm() <= 1e-12 * e0.norm() ? 0.5 * kPi
+                                                    : std::atan2(std::abs(cross(-e1, e0 - e1)), (-e1).dot(e0 - e1));
+  r.lemma2 = e1.dot(e1 - e0) <= s2;
   // Lemma 3 (read from Theorem 2 and Fig. 4): slope(O C^1_{j-2}) <= slope(O C^2_{j-2}) <= slope(O C^2_{j-3}).
-  const bool first = cross(d1, e1) >= -tol * d1.norm() * e1.norm();
-  const bool second = cross(e1, e0) >= -tol * e1.norm() * e0.norm();
+  const bool first = cross(d1, e1) >= -s2;
+  const bool second = cross(e1, e0) >= -s2;
   r.lemma3 = first && second;
   r.slopeOrder = !first ? 1 : (!second ? 2 : 0);
   // Theorem 2: (i) C^2_{j-2} in the fair location of Fig. 3, (ii) slope(O C^1_{j-2}) <= slope(O C^2_{j-3}),
   // (iii) the quadrant condition.
-  r.fairLocation = inFairLocation(e1, e0, d1, tol);
-  const bool slopes = cross(d1, e0) >= -tol * d1.norm() * e0.norm();
+  r.fairLocation = inFairLocation(e1, e0, d1, s2);
+  const bool slopes = cross(d1, e0) >= -s2;
   r.theorem2 = r.fairLocation && slopes && r.lemma1;
   return r;
 }
@@ -1135,11 +1156,16 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
     const Vec2 E = c2(i) * (c1(i + 1) * (Vi + asked) - Di);
     // dV_0: C^2_0 in the first quadrant; later dV_i: C^2_i in its fair location (Theorem 2).
     const Vec2 clamped = i == 0 ? E.cwiseMax(0.0) : projectFairLocation(E, previousE, Di);
-    const Vec2 next = (clamped / c2(i) + Di) / c1(i + 1);
-    const Vec2 used = next - Vi;
-    out.moved[i] = (used - asked).norm();
-    out.differences.row(i) = toGlobal(used).transpose();
-    Vs.push_back(next);
+    if (clamped == E) {  // already in place: kept as given
+      out.moved[i] = 0.0;
+      out.differences.row(i) = differences.row(i);
+      Vs.push_back(Vi + asked);
+    } else {
+      const Vec2 next = (clamped / c2(i) + Di) / c1(i + 1);
+      out.moved[i] = (next - Vi - asked).norm();
+      out.differences.row(i) = toGlobal(next - Vi).transpose();
+      Vs.push_back(next);
+    }
     previousE = clamped;
   }
   PointMatrix poles(n + 1, 2);

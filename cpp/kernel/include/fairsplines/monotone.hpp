@@ -54,8 +54,9 @@ struct SegmentCheck {
 };
 
 /// Lemmas 1-3 and Theorem 2 for the segment with poles c[0..3] (C_{j-3}..C_j, planar
-/// coordinates) and local knots u[0..5] = t_{j-2}..t_{j+3}. Inequalities hold up to
-/// `tol` relative to the vectors compared. No allocation: the grid search calls it.
+/// coordinates) and local knots u[0..5] = t_{j-2}..t_{j+3}. Inequalities hold up to `tol`
+/// relative to the segment's largest derivative control point. No allocation: the grid search
+/// calls it.
 SegmentCheck checkSegment(const Eigen::Vector2d c[4], const double u[6], double tol = 1e-12);
 
 /// One sentence: which condition fails and by how much, or that Theorem 1 holds.
@@ -182,8 +183,10 @@ struct MonotonicityCertificate {
 /// with X the homogeneous numerator and W the weight (for a polynomial curve
 /// N = (P' x P''') |P'|^2 - 3 (P' x P'') (P' . P'')). N is built exactly in Bernstein form;
 /// its coefficients decide the sign, with subdivision at 1/2 where they disagree (depth 48).
-/// Tolerance policy: |N| <= relTol times the largest coefficient of its two terms counts as 0
-/// (a tangency of kappa', or a line or circle); a sign change needs witnesses beyond it.
+/// Tolerance policy: |N| <= relTol * S counts as 0, S a bound of N's two terms with every
+/// derivative factor as large as the span's coordinates allow: rounding of the poles, a line
+/// or a circle (N = 0 by cancellation) and a tangency of kappa' to 0 count as "no change";
+/// a sign change needs witnesses beyond relTol * S on both sides.
 /// Curvature jumps and corners at knots of lower continuity count too.
 /// Throws InputError for a non-planar curve or non-positive weights.
 MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, double relTol = 1e-12);
