@@ -11,7 +11,7 @@ from ._freecad import ensure_freecad_path as _ensure_freecad_path
 
 _ensure_freecad_path()
 
-from .errors import InputError  # noqa: E402
+from .errors import InputError, NoMonotoneSolution  # noqa: E402
 from .curves import (  # noqa: E402
     csr_spline,
     interpolate_classic,
@@ -26,6 +26,16 @@ from .analysis import (  # noqa: E402
     curvature_extrema,
     max_distance,
 )
+from .monotone import (  # noqa: E402
+    monotone_curvature_spline,
+    monotone_curvature_solution,
+    monotone_curvature_design,
+    monotone_end_conditions,
+    clamp_to_fair_locations,
+    check_monotone_curvature,
+    curvature_variation,
+    derivative_polygons,
+)
 
 __all__ = [
     "InputError",
@@ -39,5 +49,14 @@ __all__ = [
     "curvature_sign_changes",
     "curvature_extrema",
     "max_distance",
+    "NoMonotoneSolution",
+    "monotone_curvature_spline",
+    "monotone_curvature_solution",
+    "monotone_curvature_design",
+    "monotone_end_conditions",
+    "clamp_to_fair_locations",
+    "check_monotone_curvature",
+    "curvature_variation",
+    "derivative_polygons",
 ]
 __version__ = "0.1.0"

@@ -111,6 +111,8 @@ def _edge_bspline(edge):
     if not isinstance(geom, Part.BSplineCurve):
         edge = edge.toNurbs().Edges[0]  # exact conversion (BRepBuilderAPI_NurbsConvert)
         geom = edge.Curve
+        if not isinstance(geom, Part.BSplineCurve):  # a Bezier stays a Bezier there: convert it exactly
+            geom = geom.toBSpline(geom.FirstParameter, geom.LastParameter)
     if not _spans_whole(edge, geom):
         geom = geom.copy()
         geom.segment(edge.FirstParameter, edge.LastParameter)

@@ -23,4 +23,5 @@ PYBIND11_MODULE(_kernel, m) {
     }
   });
   fairsplines::python::bindCurves(m);
+  fairsplines::python::bindMonotone(m);
 }

@@ -28,6 +28,7 @@ import Part
 
 from ..curves import PARAMETRIZATIONS, csr_spline
 from ..errors import InputError
+from ._common import Proxy, ensure_properties as _ensure, fail as _fail, succeed, undoable
 
 # Points closer than this are one point when edges are joined (OCCT's Precision::Confusion).
 JOIN_TOLERANCE = 1e-7
@@ -43,10 +44,9 @@ _PROPERTIES = (
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
 _GROUP = "Csr fit"
-_OUTPUT = 8  # App::Property::Output: setting it does not touch the object
 
 
-class CsrFit:
+class CsrFit(Proxy):
     """Proxy of a Part::FeaturePython holding a csr-spline fitted to its Sources."""
 
     Type = "CsrFit"
@@ -72,38 +72,12 @@ class CsrFit:
             _fail(obj, _describe(exc, origins))
             return
         obj.Shape = curve.toShape()
-        if obj.Status != "ok":
-            obj.Status = "ok"
-
-    # FreeCAD 0.20 stores a proxy with __getstate__/__setstate__, older versions with
-    # dumps/loads. This proxy keeps everything in properties.
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
+        succeed(obj)
 
 
 def ensure_properties(obj):
     """Add any missing property with its default; keep the values of existing ones."""
-    for type_, name, tooltip, default, mode in _PROPERTIES:
-        if name not in obj.PropertiesList:
-            obj.addProperty(type_, name, _GROUP, tooltip, _OUTPUT if name == "Status" else 0)
-            if name == "Parametrization":
-                obj.Parametrization = list(PARAMETRIZATIONS)
-            if default is not None:
-                setattr(obj, name, default)
-        elif name == "Parametrization" and list(obj.getEnumerationsOfProperty(name)) != list(PARAMETRIZATIONS):
-            value = obj.Parametrization
-            obj.Parametrization = list(PARAMETRIZATIONS)
-            obj.Parametrization = value if value in PARAMETRIZATIONS else "chordal"
-        obj.setEditorMode(name, mode)
+    _ensure(obj, _PROPERTIES, _GROUP, {"Parametrization": PARAMETRIZATIONS})
 
 
 def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=1e-9, samples=50, name="CsrFit"):
@@ -116,10 +90,7 @@ def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=
     links = normalize_sources(sources)
     if parametrization not in PARAMETRIZATIONS:
         raise InputError(f"unknown parametrization {parametrization!r}: use one of {', '.join(PARAMETRIZATIONS)}")
-    own_transaction = not doc.HasPendingTransaction
-    if own_transaction:
-        doc.openTransaction("Create csr fit")
-    try:
+    with undoable(doc, "Create csr fit"):
         obj = doc.addObject("Part::FeaturePython", name)
         CsrFit(obj)
         obj.Sources = links
@@ -132,12 +103,6 @@ def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=
 
             ViewProviderCsrFit(obj.ViewObject)
         doc.recompute()
-    except Exception:
-        if own_transaction:
-            doc.abortTransaction()
-        raise
-    if own_transaction:
-        doc.commitTransaction()
     return obj
 
 
@@ -279,9 +244,3 @@ def _describe(exc, origins):
             message += f" (from {' and '.join(names)})"
     return message
 
-
-def _fail(obj, message):
-    """Error state: keep the last good shape, show the message, let recompute go on."""
-    if obj.Status != message:
-        obj.Status = message
-    FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")
