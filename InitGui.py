@@ -25,11 +25,14 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, commands
+        from freecad_workbench.gui import ICON_DIR, commands, monotone_commands
 
         Gui.addIconPath(ICON_DIR)
         self.appendToolbar("FairSplines", list(commands.COMMANDS))
         self.appendMenu("FairSplines", list(commands.COMMANDS))
+        # Monotone curvature: its own toolbar, and a submenu.
+        self.appendToolbar("FairSplines monotone", list(monotone_commands.COMMANDS))
+        self.appendMenu(["FairSplines", "Monotone curvature"], list(monotone_commands.COMMANDS))
 
     def Activated(self):
         pass
