@@ -246,7 +246,7 @@ class MonotoneDesignTaskPanel:
         _panel = self
         self.obj = obj
         self.doc = obj.Document
-        self.doc.openTransaction("Edit monotone design")
+        self.editing = False  # the undo step opens with the first change (not inside the command)
         self.form = QtWidgets.QWidget()
         self.form.setWindowTitle(translate("FairSplines", "Monotone design"))
         self.form.setWindowIcon(QtGui.QIcon(icon_path("FairSplines_MonotoneDesign")))
@@ -279,7 +279,7 @@ class MonotoneDesignTaskPanel:
         self.table.itemChanged.connect(self.apply)
         self.add_button.clicked.connect(self.add_vector)
         self.remove_button.clicked.connect(self.remove_vector)
-        self.apply()
+        self.status.setText(self._clamp(*self.vectors())[2])
 
     # -- table <-> vectors
     def _fill(self, first, diffs, moved):
@@ -318,26 +318,41 @@ class MonotoneDesignTaskPanel:
         self.apply()
 
     # -- editing
+    def _knots(self, diffs):
+        """The design's knots if they still fit the number of vectors, else None (default)."""
+        knots = list(self.obj.Knots)
+        return knots if len(knots) == len(diffs) + 6 else None
+
+    def _clamp(self, first, diffs):
+        """(used differences, how far each moved, status text); used is None on bad input."""
+        try:
+            used, moved = monotone.clamp_to_fair_locations(first, diffs, self._knots(diffs))
+        except InputError as exc:
+            return None, None, str(exc)
+        rows = [f"dV{i}" for i, m in enumerate(moved) if m > 0.0]
+        text = (
+            translate("FairSplines", "Moved into the fair location: ") + ", ".join(rows)
+            if rows
+            else translate("FairSplines", "Every difference is in its fair location.")
+        )
+        return used, moved, text
+
     def apply(self, *_):
         """Clamp what is in the table into the fair locations, show it, update the design."""
         first, diffs = self.vectors()
-        if self.obj.Knots and len(self.obj.Knots) != len(diffs) + 6:
-            self.obj.Knots = []  # the rows changed: back to clamped, uniform knots
-        try:
-            used, moved = monotone.clamp_to_fair_locations(first, diffs, list(self.obj.Knots) or None)
-        except InputError as exc:
-            self.status.setText(str(exc))
+        used, moved, text = self._clamp(first, diffs)
+        self.status.setText(text)
+        if used is None:
             return
         self._fill(first, [tuple(u) for u in used], list(moved))
+        if not self.editing:
+            self.doc.openTransaction("Edit monotone design")
+            self.editing = True
+        if self._knots(diffs) is None and self.obj.Knots:
+            self.obj.Knots = []  # the rows changed: back to clamped, uniform knots
         self.obj.FirstVector = FreeCAD.Vector(first[0], first[1], 0)
         self.obj.Differences = [FreeCAD.Vector(x, y, 0) for x, y in used]
         self.doc.recompute()
-        movedRows = [f"dV{i}" for i, m in enumerate(moved) if m > 0.0]
-        self.status.setText(
-            translate("FairSplines", "Moved into the fair location: ") + ", ".join(movedRows)
-            if movedRows
-            else translate("FairSplines", "Every difference is in its fair location.")
-        )
 
     def add_vector(self):
         first, diffs = self.vectors()
@@ -349,14 +364,15 @@ class MonotoneDesignTaskPanel:
             self.set_vectors(first, diffs[:-1])
 
     def accept(self):
-        self.apply()
-        self.doc.commitTransaction()
+        if self.editing:
+            self.doc.commitTransaction()
         self._close()
         return True
 
     def reject(self):
-        self.doc.abortTransaction()
-        self.doc.recompute()
+        if self.editing:
+            self.doc.abortTransaction()
+            self.doc.recompute()
         self._close()
         return True
 
