@@ -43,8 +43,10 @@ def succeed(obj):
 
 @contextmanager
 def undoable(doc, title):
-    """One undo step named `title`, unless a transaction is already open (then it is part of it)."""
-    own = not doc.HasPendingTransaction
+    """One undo step named `title`, unless a transaction is already open (then it is part of it)
+    or the document keeps no undo (UndoMode 0, as headless documents by default: there an
+    opened transaction would never close and would lend its name to the next one anywhere)."""
+    own = bool(doc.UndoMode) and not doc.HasPendingTransaction
     if own:
         doc.openTransaction(title)
     try:

@@ -247,3 +247,16 @@ def test_design_with_bad_vectors_keeps_its_shape_and_says_why(doc):
     design.Differences = [V(10, 5, 0), V(3, 4.5, 0)]
     doc.recompute()
     assert design.Status == "ok"
+
+
+def test_creation_without_undo_leaves_no_transaction_open(doc, edges):
+    # Regression: a transaction opened in a document that keeps no undo never closed, and
+    # FreeCAD gave its name to the next command's undo step in any document.
+    from freecad_workbench.features.csr_fit import make_csr_fit
+
+    assert doc.UndoMode == 0
+    lead, out = edges
+    make_monotone_blend(doc, (lead, "Edge1"), (out, "Edge1"))
+    make_monotone_design(doc, (1, 0), [(1, 0.5), (0.3, 0.45)])
+    make_csr_fit(doc, [(lead, "Edge1"), (out, "Edge1")])
+    assert FreeCAD.getActiveTransaction() is None
