@@ -40,6 +40,7 @@ run: install
 
 bench: build
 	$(BUILD)/bench/bench_csr
+	$(BUILD)/bench/bench_monotone
 	$(PYTHON) bench/bench_handover.py
 
 clean:

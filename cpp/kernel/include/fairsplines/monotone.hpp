@@ -98,9 +98,10 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
 enum class MonotoneMethod {
   /// The analytic centre of the admissible set: the curve maximizing the sum of the
   /// logarithms of the distances of C^2_0 to the two sides of the first quadrant and of
-  /// C^2_1, C^2_2 to the four sides of their fair locations (angles in radians, radii as
-  /// fractions of the largest radius allowed). It lies deepest inside Theorem 2's
-  /// conditions, so its curvature decreases strictly, and it is unique in our tests.
+  /// C^2_1, C^2_2 to the four sides of their fair locations (angles in radians; radially
+  /// |C^2_j| / |C^2_{j-1}| and cos(delta) minus it, delta the angle between them). It lies
+  /// deepest inside Theorem 2's conditions, so its curvature decreases strictly, and it is
+  /// unique in our tests.
   /// Newton's method with exact second derivatives; the parabola (the family's boundary)
   /// when the admissible set has no interior.
   Fairest,
