@@ -16,6 +16,7 @@
 #include <random>
 
 #include "fairsplines/monotone.hpp"
+#include "fairsplines/monotone_detail.hpp"
 #include "fairsplines/occt.hpp"
 #include "test_support.hpp"
 
@@ -563,4 +564,49 @@ TEST(Monotone, CurvatureVariation_IsZeroForLinesAndCirclesOnly) {
   const Handle(Geom_TrimmedCurve) arc = GC_MakeArcOfCircle(gp_Pnt(2, 0, 0), gp_Pnt(0, 2, 0), gp_Pnt(-2, 0, 0)).Value();
   EXPECT_NEAR(curvatureVariation(fromOcct(GeomConvert::CurveToBSplineCurve(arc))), 0.0, 1e-15);
   EXPECT_GT(curvatureVariation(cubicGraph(0.0, 0.3)), 1e-3);
+}
+
+TEST(Monotone, Fairest_NewtonReachesTheSameStationaryCentreFromEveryStart) {
+  // Normalized ends (C0 = 0, T0 = +x, |C4| = 1): the analytic centre does not depend on where
+  // Newton starts, and the barrier's gradient vanishes there (central differences).
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const double turn = 0.05 + 1.45 * unit(rng), limit = std::cos(turn) / (1 + std::cos(turn));
+    const double r = (0.05 + 0.9 * unit(rng)) * limit;
+    const Vector2d T(std::cos(turn), std::sin(turn));
+    const Vector2d C4 = Vector2d(r, 0) + (1 - r) * T;
+    const double L = C4.norm();
+    const Vector2d P = C4 / L;
+    std::vector<Eigen::Vector4d> centres;
+    for (double k : {0.8, 0.95, 0.99, 0.999}) {
+      for (double theta : {0.1, 0.01, 0.001}) {
+        if (const auto start = detail::geometricStart(P, T, k, theta)) {
+          int iterations = 0;
+          centres.push_back(detail::analyticCentre(*start, P, T, iterations));
+          EXPECT_LT(iterations, 60);
+        }
+      }
+    }
+    ASSERT_FALSE(centres.empty()) << trial;
+    for (const Eigen::Vector4d& c : centres) EXPECT_LE((c - centres[0]).norm(), 1e-7) << trial;
+    compared += static_cast<int>(centres.size()) - 1;
+    const Eigen::Vector4d& x = centres[0];
+    EXPECT_GT(detail::margin(x, P, T), 0.0);
+    for (int i = 0; i < 4; ++i) {  // stationary: the Newton correction along each axis is below 1e-8
+      const double h = 1e-5, f0 = detail::barrier(x, P, T);
+      auto at = [&](double d) {
+        Eigen::Vector4d y = x;
+        y[i] += d;
+        return detail::barrier(y, P, T);
+      };
+      auto slope = [&](double d) { return (at(d) - at(-d)) / (2 * d); };
+      const double first = (4 * slope(h / 2) - slope(h)) / 3;  // Richardson-extrapolated
+      const double second = (at(h) - 2 * f0 + at(-h)) / (h * h);
+      EXPECT_GT(second, 0.0) << trial << " " << i;
+      EXPECT_LE(std::abs(first / second), 1e-8) << trial << " " << i;
+    }
+  }
+  EXPECT_GT(compared, 100);
 }

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fairsplines/analysis.hpp"
+#include "fairsplines/monotone_detail.hpp"
 #include "fairsplines/occt.hpp"
 
 namespace fairsplines {
@@ -788,6 +789,10 @@ bool interior(const double* m) {
   return true;
 }
 
+}  // namespace
+
+namespace detail {
+
 /// -sum log(slacks), +inf outside.
 double barrier(const Eigen::Vector4d& x, const Vec2& P, const Vec2& Tan) {
   double m[kSlacks];
@@ -821,39 +826,39 @@ double margin(const Eigen::Vector4d& x, const Vec2& P, const Vec2& Tan) {
   return *std::min_element(std::begin(fractions), std::end(fractions));
 }
 
-/// A strictly interior start: E1 = q R(-theta) E0, E2 = q R(-theta) E1 with q = k cos(theta)
-/// (each C^2 turned by theta and shrunk inside its circle); for given (theta, k) the end
-/// conditions are a 3x3 linear system in (s, E0). Scans (k, theta) from far inside to near
-/// the parabola (k -> 1, theta -> 0), where the admissible set gets thin.
+std::optional<Eigen::Vector4d> geometricStart(const Vec2& P, const Vec2& Tan, double k, double theta) {
+  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+  const double q = k * std::cos(theta);
+  Eigen::Matrix2d R;
+  R << std::cos(theta), std::sin(theta), -std::sin(theta), std::cos(theta);  // rotation by -theta
+  const Eigen::Matrix2d qR = q * R, q2R2 = qR * qR;
+  const Eigen::Matrix2d L = (5.0 * I + 6.0 * qR + q2R2) / 6.0;  // C4 - C0 = 2 s ex + L E0
+  const Eigen::Matrix2d K = (I + 2.0 * qR + q2R2) / 2.0;        // D3 = s ex + K E0
+  Eigen::Matrix3d A;
+  A << 2.0, L(0, 0), L(0, 1), 0.0, L(1, 0), L(1, 1), Tan.y(), K(0, 0) * Tan.y() - K(1, 0) * Tan.x(),
+      K(0, 1) * Tan.y() - K(1, 1) * Tan.x();
+  const Eigen::Vector3d sol = A.partialPivLu().solve(Eigen::Vector3d(P.x(), P.y(), 0.0));
+  const Vec2 E0 = sol.tail<2>();
+  const Vec2 E1 = qR * E0;
+  const double lambda = (Vec2(sol[0], 0.0) + K * E0).dot(Tan);
+  const Eigen::Vector4d x(sol[0], lambda, E1.x(), E1.y());
+  double m[kSlacks];
+  slacks(x.data(), P, Tan, m);
+  if (x.allFinite() && interior(m)) return x;
+  return std::nullopt;
+}
+
 std::optional<Eigen::Vector4d> interiorStart(const Vec2& P, const Vec2& Tan) {
   static const double ks[] = {0.8, 0.95, 0.99, 0.997, 0.999, 0.9997, 0.9999, 0.99997, 0.99999, 0.999997, 0.999999};
   static const double thetas[] = {0.3, 0.1, 0.03, 0.01, 0.003, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6};
-  const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
   for (double k : ks) {
     for (double theta : thetas) {
-      const double q = k * std::cos(theta);
-      Eigen::Matrix2d R;
-      R << std::cos(theta), std::sin(theta), -std::sin(theta), std::cos(theta);  // rotation by -theta
-      const Eigen::Matrix2d qR = q * R, q2R2 = qR * qR;
-      const Eigen::Matrix2d L = (5.0 * I + 6.0 * qR + q2R2) / 6.0;  // C4 - C0 = 2 s ex + L E0
-      const Eigen::Matrix2d K = (I + 2.0 * qR + q2R2) / 2.0;        // D3 = s ex + K E0
-      Eigen::Matrix3d A;
-      A << 2.0, L(0, 0), L(0, 1), 0.0, L(1, 0), L(1, 1), Tan.y(), K(0, 0) * Tan.y() - K(1, 0) * Tan.x(),
-          K(0, 1) * Tan.y() - K(1, 1) * Tan.x();
-      const Eigen::Vector3d sol = A.partialPivLu().solve(Eigen::Vector3d(P.x(), P.y(), 0.0));
-      const Vec2 E0 = sol.tail<2>();
-      const Vec2 E1 = qR * E0;
-      const double lambda = (Vec2(sol[0], 0.0) + K * E0).dot(Tan);
-      const Eigen::Vector4d x(sol[0], lambda, E1.x(), E1.y());
-      double m[kSlacks];
-      slacks(x.data(), P, Tan, m);
-      if (x.allFinite() && interior(m)) return x;
+      if (std::optional<Eigen::Vector4d> x = geometricStart(P, Tan, k, theta)) return x;
     }
   }
   return std::nullopt;
 }
 
-/// Damped Newton for the analytic centre, from an interior point; stays interior.
 Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Vec2& P, const Vec2& Tan, int& iterations) {
   double f = barrier(x, P, Tan);
   for (iterations = 0; iterations < 100; ++iterations) {
@@ -868,14 +873,16 @@ Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Vec2& P, const Vec2& Tan
       shift *= 10.0;
     }
     const Eigen::Vector4d d = -ldlt.solve(j.g);
-    const double decrement = -j.g.dot(d);  // Newton decrement squared
-    if (!(decrement > 1e-22)) break;
+    // Newton decrement squared: about twice f - min f. Below f's rounding the steps only
+    // wander along flat directions.
+    const double decrement = -j.g.dot(d);
+    if (!(decrement > 1e-18 * std::max(1.0, std::abs(f)))) break;
     double t = 1.0;
     bool moved = false;
     for (int k = 0; k < 60; ++k, t *= 0.5) {
       const Eigen::Vector4d next = x + t * d;
       const double fn = barrier(next, P, Tan);
-      if (fn <= f - 0.25 * t * decrement) {
+      if (fn <= f - 0.25 * t * decrement && fn < f) {
         x = next;
         f = fn;
         moved = true;
@@ -886,6 +893,14 @@ Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Vec2& P, const Vec2& Tan
   }
   return x;
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::analyticCentre;
+using detail::interiorStart;
+using detail::margin;
 
 /// The normalized poles C0..C4 of x.
 std::array<Vec2, 5> polesOf(const Eigen::Vector4d& x, const Vec2& P, const Vec2& Tan) {
