@@ -17,7 +17,7 @@ from typing import Optional, Tuple
 import numpy as np
 
 from . import _kernel
-from .errors import InputError, NoMonotoneSolution  # noqa: F401  (re-exported by the package)
+from .errors import InputError
 from .kernel import as_points, from_part, to_part
 
 METHODS = ("fairest", "grid")

@@ -1221,11 +1221,10 @@ MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::V
   const Classified forward = classify(p0, t0, p1, t1);
   if (!forward.ec.admissible) throw NoMonotoneSolution("no monotone-curvature curve: " + forward.ec.reason);
   MonotoneSpline out;
-  if (forward.ec.straight) {  // the straight segment, parametrized uniformly
+  if (forward.ec.straight) {  // the straight segment (curvature 0), parametrized uniformly
     PointMatrix poles(5, 3);
     const double f[5] = {0.0, 1.0 / 6.0, 0.5, 5.0 / 6.0, 1.0};
     for (int i = 0; i < 5; ++i) poles.row(i) = (p0 + f[i] * (p1 - p0)).transpose();
-    poles.row(0) = p0.transpose();
     poles.row(4) = p1.transpose();
     out.curve = alg2Curve(std::move(poles));
     out.boundary = true;

@@ -138,7 +138,8 @@ struct MonotoneSpline {
 /// Algorithm 2: the cubic B-spline with 5 poles that starts at p0 with tangent direction t0,
 /// ends at p1 with direction t1 and has monotone curvature, at any position, orientation and
 /// mirror image (the data are normalized to C_0 = 0, T_0 = +x, a left turn, curvature
-/// decreasing from C_0). Every result is verified by Theorem 1 and by the exact certificate.
+/// decreasing from C_0). Every result is verified by Theorem 1 and by the exact certificate
+/// (collinear ends give the straight segment).
 /// Throws NoMonotoneSolution when the family has no such curve (the message says why) or,
 /// for PaperGrid, when the grid finds none; InputError on bad input.
 MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0,
