@@ -196,6 +196,10 @@ TEST(Monotone, Algorithm1_KeepsDifferencesAlreadyInTheirFairLocation) {
   EXPECT_EQ(e.moved[0], 0.0);
   EXPECT_EQ(e.moved[1], 0.0);
   EXPECT_TRUE(certifyMonotoneCurvature(e.curve).decreasing);
+  // Given back, the clamped differences stay put (on the circle, up to rounding).
+  const MonotoneDesign again = designMonotone(Vector2d(1, 0), e.differences);
+  EXPECT_EQ(again.moved.maxCoeff(), 0.0);
+  EXPECT_EQ((again.differences - e.differences).cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(Monotone, Algorithm1_RejectsBadInput) {

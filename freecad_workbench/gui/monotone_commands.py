@@ -238,6 +238,7 @@ class MonotoneDesignTaskPanel:
     follows. OK keeps the edit, Cancel restores the design as it was."""
 
     COLUMNS = 3
+    DIGITS = 6
 
     def __init__(self, obj):
         from PySide2 import QtGui, QtWidgets
@@ -263,6 +264,7 @@ class MonotoneDesignTaskPanel:
         layout.addWidget(intro)
         self.table = QtWidgets.QTableWidget(0, self.COLUMNS)
         self.table.setHorizontalHeaderLabels(["x", "y", translate("FairSplines", "moved")])
+        self.table.horizontalHeader().setSectionResizeMode(QtWidgets.QHeaderView.Stretch)
         layout.addWidget(self.table)
         buttons = QtWidgets.QHBoxLayout()
         self.add_button = QtWidgets.QPushButton(translate("FairSplines", "Add vector"))
@@ -291,20 +293,30 @@ class MonotoneDesignTaskPanel:
         rows = [first] + list(diffs)
         for r, (x, y) in enumerate(rows):
             for c, value in enumerate((x, y)):
-                self.table.setItem(r, c, QtWidgets.QTableWidgetItem(f"{value:.12g}"))
-            note = "" if r == 0 or moved[r - 1] == 0.0 else f"{moved[r - 1]:.4g}"
+                # Shown with DIGITS digits; the item keeps the exact value while its text is unchanged.
+                item = QtWidgets.QTableWidgetItem(f"{value:.{self.DIGITS}g}")
+                item.setData(QtCore.Qt.UserRole, float(value))
+                self.table.setItem(r, c, item)
+            note = "" if r == 0 or moved[r - 1] == 0.0 else f"{moved[r - 1]:.3g}"
             item = QtWidgets.QTableWidgetItem(note)
             item.setFlags(item.flags() & ~QtCore.Qt.ItemIsEditable)
             self.table.setItem(r, 2, item)
         self.table.blockSignals(False)
 
     def vectors(self):
-        """(V0, [dV_i]) as typed; a cell that is not a number counts as 0."""
+        """(V0, [dV_i]) as shown: exact where a cell was not retyped; a cell that is not a
+        number counts as 0."""
+        from PySide2 import QtCore
+
         rows = []
         for r in range(self.table.rowCount()):
             row = []
             for c in range(2):
                 item = self.table.item(r, c)
+                exact = item.data(QtCore.Qt.UserRole) if item is not None else None
+                if exact is not None and item.text() == f"{exact:.{self.DIGITS}g}":
+                    row.append(exact)
+                    continue
                 try:
                     row.append(float(item.text()) if item is not None else 0.0)
                 except ValueError:

@@ -1170,8 +1170,12 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
     const Vec2 asked = toLocal(differences.row(i).transpose());
     const Vec2 E = c2(i) * (c1(i + 1) * (Vi + asked) - Di);
     // dV_0: C^2_0 in the first quadrant; later dV_i: C^2_i in its fair location (Theorem 2).
-    const Vec2 clamped = i == 0 ? E.cwiseMax(0.0) : projectFairLocation(E, previousE, Di);
-    if (clamped == E) {  // already in place: kept as given
+    // Kept as given when in place up to rounding (so a clamped value given back stays put).
+    const double slack = 1e-12 * (E.squaredNorm() + (i == 0 ? 0.0 : previousE.squaredNorm()));
+    const bool inPlace = i == 0 ? E.minCoeff() >= -1e-12 * E.norm()
+                                : inFairLocation(E, previousE, previousE.norm() * Di.normalized(), slack);
+    const Vec2 clamped = inPlace ? E : (i == 0 ? E.cwiseMax(0.0) : projectFairLocation(E, previousE, Di));
+    if (inPlace) {
       out.moved[i] = 0.0;
       out.differences.row(i) = differences.row(i);
       Vs.push_back(Vi + asked);
