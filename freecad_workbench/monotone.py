@@ -18,23 +18,9 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError
-from .kernel import as_points, from_part, to_part
+from .kernel import as_points, as_vector, from_part, to_part
 
 METHODS = ("fairest", "grid")
-
-
-def _vector(value, name):
-    """A point or direction (FreeCAD.Vector, Part.Vertex, 2 or 3 numbers) as 3 floats; the
-    kernel checks the values (NaN, zero tangents, coincident points)."""
-    if hasattr(value, "Point"):  # Part.Vertex
-        value = value.Point
-    try:
-        v = [float(value.x), float(value.y), float(value.z)] if hasattr(value, "x") else [float(c) for c in value]
-    except (TypeError, ValueError):
-        raise InputError(f"{name} is not a point or vector: {value!r}") from None
-    if len(v) not in (2, 3):
-        raise InputError(f"{name} needs 2 or 3 coordinates, got {len(v)}")
-    return np.array(v + [0.0] * (3 - len(v)))
 
 
 @dataclass(frozen=True)
@@ -55,7 +41,7 @@ def monotone_end_conditions(p0, t0, p1, t1):
     behind p1, turn by less than 90 degrees, and min(a, b) <= max(a, b) cos(turn) with
     a = |M - p0|, b = |p1 - M| (equality: a parabola from its vertex). Raises InputError on bad
     input (a zero tangent, coincident points, NaN)."""
-    info = _kernel.analyze_end_conditions(_vector(p0, "p0"), _vector(t0, "t0"), _vector(p1, "p1"), _vector(t1, "t1"))
+    info = _kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"))
     return EndConditions(**info)
 
 
@@ -89,17 +75,17 @@ def monotone_curvature_solution(p0, t0, p1, t1, method="fairest", grid_step=0.02
     if method not in METHODS:
         raise InputError(f"unknown method {method!r}: use 'fairest' or 'grid'")
     curve, reversed_, boundary, margin, iterations = _kernel.monotone_spline(
-        _vector(p0, "p0"), _vector(t0, "t0"), _vector(p1, "p1"), _vector(t1, "t1"), method, float(grid_step)
+        as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"), method, float(grid_step)
     )
     return MonotoneSolution(to_part(curve), bool(reversed_), bool(boundary), float(margin), int(iterations))
 
 
 def _design_inputs(first_vector, differences, knots, start):
-    first = _vector(first_vector, "first_vector")
+    first = as_vector(first_vector, "first_vector")
     diffs = as_points(differences, "differences")
     if first[2] != 0.0 or (diffs.shape[1] == 3 and np.any(diffs[:, 2] != 0.0)):
         raise InputError("Algorithm 1 designs in the XY plane: give vectors with z = 0")
-    origin = np.zeros(2) if start is None else _vector(start, "start")[:2]
+    origin = np.zeros(2) if start is None else as_vector(start, "start")[:2]
     t = np.zeros(0) if knots is None else np.asarray(knots, dtype=float).ravel()
     return first[:2].copy(), np.ascontiguousarray(diffs[:, :2]), t, origin
 

@@ -22,6 +22,7 @@ import FreeCAD
 import Part
 
 from ..errors import InputError
+from ..kernel import as_vector
 from ..monotone import METHODS, check_monotone_curvature, monotone_curvature_solution
 from ._common import Proxy, ensure_properties as _ensure, fail, succeed, undoable
 
@@ -100,19 +101,15 @@ def make_monotone_blend(
         obj.Start, obj.End = links
         obj.StartEnd, obj.EndEnd, obj.Method = start_end, end_end, method
         if start_direction is not None:
-            obj.StartDirection = FreeCAD.Vector(*_triple(start_direction))
+            obj.StartDirection = FreeCAD.Vector(*as_vector(start_direction, "start_direction"))
         if end_direction is not None:
-            obj.EndDirection = FreeCAD.Vector(*_triple(end_direction))
+            obj.EndDirection = FreeCAD.Vector(*as_vector(end_direction, "end_direction"))
         if FreeCAD.GuiUp:
             from ..gui.view_providers import ViewProviderMonotoneBlend
 
             ViewProviderMonotoneBlend(obj.ViewObject)
         doc.recompute()
     return obj
-
-
-def _triple(v):
-    return (v.x, v.y, v.z) if hasattr(v, "x") else tuple(float(c) for c in v) + (0.0,) * (3 - len(v))
 
 
 def _link(item, what):
@@ -139,25 +136,33 @@ def end_conditions(obj):
 
 
 def _element(link, name):
-    """The edge or vertex a LinkSub names (a whole object: its single edge or vertex)."""
+    """The edge or vertex a LinkSub names."""
     if link is None or link[0] is None:
         raise InputError(f"{name} is not set: select an edge or a vertex")
     obj, subs = link
-    sub = subs[0] if subs else ""
+    try:
+        return element_shape(obj, subs[0] if subs else "")
+    except InputError as exc:
+        raise InputError(f"{name}: {exc}") from None
+
+
+def element_shape(obj, sub=""):
+    """The edge or vertex `sub` of obj, or obj's single edge or vertex when sub is ''.
+    Raises InputError otherwise."""
     origin = f"{obj.Label}.{sub}" if sub else obj.Label
     try:
         shape = Part.getShape(obj, sub, needSubElement=True) if sub else Part.getShape(obj)
     except Exception:
         shape = Part.Shape()
     if shape.isNull():
-        raise InputError(f"{name}: {origin} not found")
+        raise InputError(f"{origin} not found")
     if shape.ShapeType in ("Edge", "Vertex"):
         return shape
     if len(shape.Edges) == 1:
         return shape.Edges[0]
     if not shape.Edges and len(shape.Vertexes) == 1:
         return shape.Vertexes[0]
-    raise InputError(f"{name}: {origin} is not one edge or one vertex: select an edge or a vertex of it")
+    raise InputError(f"{origin} is not one edge or one vertex: select an edge or a vertex of it")
 
 
 def _candidates(shape, choice):

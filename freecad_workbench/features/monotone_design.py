@@ -14,6 +14,7 @@ good shape and puts the reason in `Status`.
 """
 import FreeCAD
 
+from ..kernel import as_vector
 from ..monotone import clamp_to_fair_locations, monotone_curvature_design
 from ._common import Proxy, ensure_properties as _ensure, fail, succeed, undoable
 
@@ -75,8 +76,8 @@ def make_monotone_design(doc, first_vector, differences, knots=None, name="Monot
     with undoable(doc, "Create monotone design"):
         obj = doc.addObject("Part::FeaturePython", name)
         MonotoneDesign(obj)
-        obj.FirstVector = _vector(first_vector)
-        obj.Differences = [_vector(d) for d in differences]
+        obj.FirstVector = FreeCAD.Vector(*as_vector(first_vector, "first_vector"))
+        obj.Differences = [FreeCAD.Vector(*as_vector(d, f"dV_{i}")) for i, d in enumerate(differences)]
         obj.Knots = [float(t) for t in knots] if knots is not None else []
         if FreeCAD.GuiUp:
             from ..gui.view_providers import ViewProviderMonotoneDesign
@@ -85,9 +86,3 @@ def make_monotone_design(doc, first_vector, differences, knots=None, name="Monot
         doc.recompute()
     return obj
 
-
-def _vector(v):
-    if hasattr(v, "x"):
-        return FreeCAD.Vector(v.x, v.y, v.z)
-    values = [float(c) for c in v]
-    return FreeCAD.Vector(*(values + [0.0] * (3 - len(values))))

@@ -10,7 +10,7 @@ import Part
 
 from .. import monotone
 from ..errors import InputError
-from ..features.monotone_blend import end_tangent
+from ..features.monotone_blend import element_shape, end_tangent
 from ..features.monotone_design import MonotoneDesign
 from . import icon_path, plot
 from .commands import _edge_links, _links_code, selected_links
@@ -30,16 +30,10 @@ DEFAULT_DESIGN = ((10.0, 0.0), [(10.0, 5.0), (3.0, 4.5), (-133.0 / 12, -13.0 / 3
 def _side(obj, sub, picked):
     """(shape, end choice) of one selected side: an edge with the end nearest to where it was
     picked ("auto" when the pick is not on it), or a vertex (None)."""
-    shape = Part.getShape(obj, sub, needSubElement=True) if sub else Part.getShape(obj)
-    if shape.isNull():
+    try:
+        shape = element_shape(obj, sub)
+    except InputError:
         return None
-    if shape.ShapeType not in ("Edge", "Vertex"):
-        if len(shape.Edges) == 1:
-            shape = shape.Edges[0]
-        elif not shape.Edges and len(shape.Vertexes) == 1:
-            shape = shape.Vertexes[0]
-        else:
-            return None
     if shape.ShapeType == "Vertex":
         return shape, None
     end = "auto"

@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 import FreeCAD
-import Part
 
 import freecad_workbench as fw
 from freecad_workbench.features.monotone_blend import MonotoneBlend, end_conditions, make_monotone_blend
