@@ -25,7 +25,7 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, commands, design_commands
+        from freecad_workbench.gui import ICON_DIR, commands, design_commands, monotone_commands
 
         Gui.addIconPath(ICON_DIR)
         self.appendToolbar("FairSplines", list(commands.COMMANDS))
@@ -35,6 +35,9 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
         self.appendMenu("FairSplines", ["Separator"])
         self.appendMenu(["FairSplines", "Basic curve"], list(design_commands.KIND_COMMANDS.values()))
         self.appendMenu("FairSplines", list(design_commands.DESIGN_COMMANDS[1:]))
+        # Monotone curvature: its own toolbar, and a submenu.
+        self.appendToolbar("FairSplines monotone", list(monotone_commands.COMMANDS))
+        self.appendMenu(["FairSplines", "Monotone curvature"], list(monotone_commands.COMMANDS))
 
     def Activated(self):
         pass

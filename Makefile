@@ -42,6 +42,7 @@ bench: build
 	$(BUILD)/bench/bench_csr
 	$(BUILD)/bench/bench_design
 	$(BUILD)/bench/bench_blend
+	$(BUILD)/bench/bench_monotone
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py

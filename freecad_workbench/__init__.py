@@ -11,7 +11,7 @@ from ._freecad import ensure_freecad_path as _ensure_freecad_path
 
 _ensure_freecad_path()
 
-from .errors import InputError  # noqa: E402
+from .errors import InputError, NoMonotoneSolution  # noqa: E402
 from .curves import (  # noqa: E402
     csr_spline,
     interpolate_classic,
@@ -29,6 +29,16 @@ from .analysis import (  # noqa: E402
     curvature_sign_changes,
     curvature_extrema,
     max_distance,
+)
+from .monotone import (  # noqa: E402
+    monotone_curvature_spline,
+    monotone_curvature_solution,
+    monotone_curvature_design,
+    monotone_end_conditions,
+    clamp_to_fair_locations,
+    check_monotone_curvature,
+    curvature_variation,
+    derivative_polygons,
 )
 
 __all__ = [
@@ -54,5 +64,14 @@ __all__ = [
     "blend_basic_shape",
     "blend_naive",
     "freeform_knots",
+    "NoMonotoneSolution",
+    "monotone_curvature_spline",
+    "monotone_curvature_solution",
+    "monotone_curvature_design",
+    "monotone_end_conditions",
+    "clamp_to_fair_locations",
+    "check_monotone_curvature",
+    "curvature_variation",
+    "derivative_polygons",
 ]
 __version__ = "0.1.0"

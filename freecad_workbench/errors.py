@@ -1,6 +1,6 @@
 """Exceptions of the macro API. Bad input raises InputError, a ValueError."""
 try:
-    from ._kernel import InputError
+    from ._kernel import InputError, NoMonotoneSolution
 except ImportError as exc:  # pragma: no cover - only when the kernel is not built
     raise ImportError(
         "the FairSplines C++ kernel (freecad_workbench/_kernel*.so) is missing or was built for another "
@@ -9,5 +9,10 @@ except ImportError as exc:  # pragma: no cover - only when the kernel is not bui
 
 InputError.__module__ = "freecad_workbench"
 InputError.__doc__ = "Bad input: the message names the problem (a subclass of ValueError)."
+NoMonotoneSolution.__module__ = "freecad_workbench"
+NoMonotoneSolution.__doc__ = (
+    "No monotone-curvature curve of the family meets the end conditions; the message says why "
+    "(a subclass of InputError)."
+)
 
-__all__ = ["InputError"]
+__all__ = ["InputError", "NoMonotoneSolution"]

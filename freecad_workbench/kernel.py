@@ -36,6 +36,20 @@ def as_points(points, name="points"):
     return array
 
 
+def as_vector(value, name="vector"):
+    """One point or direction (FreeCAD.Vector, Part.Vertex, 2 or 3 numbers) as 3 floats
+    (z = 0 for 2 numbers). The values themselves (NaN, zero length) are the kernel's to check."""
+    if hasattr(value, "Point"):  # Part.Vertex
+        value = value.Point
+    try:
+        v = [float(value.x), float(value.y), float(value.z)] if hasattr(value, "x") else [float(c) for c in value]
+    except (TypeError, ValueError):
+        raise InputError(f"{name} is not a point or vector: {value!r}") from None
+    if len(v) not in (2, 3):
+        raise InputError(f"{name} needs 2 or 3 coordinates, got {len(v)}")
+    return np.array(v + [0.0] * (3 - len(v)))
+
+
 def to_part(curve):
     """Exact hand-over of a kernel BSplineCurve to a FreeCAD Part.BSplineCurve.
 
@@ -150,6 +164,8 @@ def _edge_bspline(edge):
     if not isinstance(geom, Part.BSplineCurve):
         edge = edge.toNurbs().Edges[0]  # exact conversion (BRepBuilderAPI_NurbsConvert)
         geom = edge.Curve
+        if not isinstance(geom, Part.BSplineCurve):  # a Bezier stays a Bezier there: convert it exactly
+            geom = geom.toBSpline(geom.FirstParameter, geom.LastParameter)
     if not _spans_whole(edge, geom):
         geom = geom.copy()
         geom.segment(edge.FirstParameter, edge.LastParameter)

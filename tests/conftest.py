@@ -88,10 +88,12 @@ def gui():
     import FreeCADGui
 
     FreeCADGui.showMainWindow()
-    if "FairSplinesWorkbench" not in FreeCADGui.listWorkbenches():
-        # Not linked into the user Mod folder: run InitGui.py the way FreeCAD does.
-        with open(os.path.join(REPO, "InitGui.py"), encoding="utf-8") as f:
-            exec(compile(f.read(), os.path.join(REPO, "InitGui.py"), "exec"), {"__name__": "InitGui"})
+    # The workbench under test is this checkout's: the user Mod folder may link another one
+    # (make install), whose InitGui.py FreeCAD has just run. Run ours the way FreeCAD does.
+    if "FairSplinesWorkbench" in FreeCADGui.listWorkbenches():
+        FreeCADGui.removeWorkbench("FairSplinesWorkbench")
+    with open(os.path.join(REPO, "InitGui.py"), encoding="utf-8") as f:
+        exec(compile(f.read(), os.path.join(REPO, "InitGui.py"), "exec"), {"__name__": "InitGui"})
     FreeCADGui.activateWorkbench("FairSplinesWorkbench")
     FreeCADGui.updateGui()
     yield FreeCADGui

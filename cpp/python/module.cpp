@@ -25,4 +25,5 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindCurves(m);
   fairsplines::python::bindDesign(m);
   fairsplines::python::bindBlend(m);
+  fairsplines::python::bindMonotone(m);
 }

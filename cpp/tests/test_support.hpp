@@ -1,8 +1,10 @@
 // Helpers for the kernel tests: OCCT evaluation is the referee.
 #pragma once
+#include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "fairsplines/types.hpp"
 
@@ -53,6 +55,60 @@ inline int signChanges(const Handle(Geom_BSplineCurve)& c, int perSpan = 32) {
     }
   }
   return changes;
+}
+
+/// G1 end conditions p0, t0, p1, t1 (3D vectors).
+struct EndCondition {
+  Eigen::Vector3d p0, t0, p1, t1;
+  bool reversed = false;  ///< built so that the curvature must increase from p0
+};
+
+/// Random end conditions the monotone-curvature family can meet: turn in (0.5, 89.5) deg, legs
+/// a = |M - p0|, b = |p1 - M| with a/(a+b) uniform in (0.001, 0.999) of its limit cos/(1+cos)
+/// (or the reverse), in random positions, orientations, scales (1e-2 .. 1e3) and mirror
+/// images, half of them in random planes of 3D space; tangents of random length.
+inline std::vector<EndCondition> randomAdmissibleEnds(int count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double pi = std::acos(-1.0);
+  std::vector<EndCondition> out;
+  for (int k = 0; k < count; ++k) {
+    const double turn = (0.5 + 89.0 * unit(rng)) * pi / 180.0;
+    const double rmax = std::cos(turn) / (1.0 + std::cos(turn));
+    const double r = (0.001 + 0.998 * unit(rng)) * rmax;
+    Eigen::Vector2d q0(0, 0), d0(1, 0), d1(std::cos(turn), std::sin(turn));
+    Eigen::Vector2d q1 = Eigen::Vector2d(r, 0) + (1 - r) * d1;
+    EndCondition e;
+    if (unit(rng) < 0.5) {  // curvature increasing from p0: the same curve run backwards
+      std::swap(q0, q1);
+      const Eigen::Vector2d back0 = -d1, back1 = -d0;
+      d0 = back0;
+      d1 = back1;
+      e.reversed = true;
+    }
+    const double mirror = unit(rng) < 0.5 ? -1.0 : 1.0;
+    const double scale = std::pow(10.0, -2.0 + 5.0 * unit(rng)), angle = 2 * pi * unit(rng);
+    const Eigen::Rotation2Dd rot(angle);
+    auto place = [&](const Eigen::Vector2d& v, bool point) {
+      Eigen::Vector2d w = rot * Eigen::Vector2d(v.x(), mirror * v.y());
+      return point ? Eigen::Vector2d(scale * w) : w;
+    };
+    Eigen::Vector3d origin(200 * unit(rng) - 100, 200 * unit(rng) - 100, 0), e1(1, 0, 0), e2(0, 1, 0);
+    if (k % 2 == 1) {  // a random plane of space
+      origin.z() = 200 * unit(rng) - 100;
+      std::normal_distribution<double> normal;
+      const Eigen::Quaterniond qr = Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+      e1 = qr * e1;
+      e2 = qr * e2;
+    }
+    auto lift = [&](const Eigen::Vector2d& v) { return Eigen::Vector3d(v.x() * e1 + v.y() * e2); };
+    e.p0 = origin + lift(place(q0, true));
+    e.p1 = origin + lift(place(q1, true));
+    e.t0 = (0.1 + 10 * unit(rng)) * lift(place(d0, false));
+    e.t1 = (0.1 + 10 * unit(rng)) * lift(place(d1, false));
+    out.push_back(e);
+  }
+  return out;
 }
 
 }  // namespace fairsplines::test

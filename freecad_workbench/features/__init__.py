@@ -5,6 +5,8 @@ from .basic_curve import BasicCurveFeature, make_basic_curve
 from .csr_fit import CsrFit, make_csr_fit
 from .design_spline import DesignSpline, make_design_spline
 from .edit_polygon import EditPolygon, make_edit_polygon
+from .monotone_blend import MonotoneBlend, make_monotone_blend
+from .monotone_design import MonotoneDesign, make_monotone_design
 from .profile_test import ProfileTest, make_profile_test
 
 __all__ = [
@@ -12,10 +14,14 @@ __all__ = [
     "CsrFit",
     "DesignSpline",
     "EditPolygon",
+    "MonotoneBlend",
+    "MonotoneDesign",
     "ProfileTest",
     "make_basic_curve",
     "make_csr_fit",
     "make_design_spline",
     "make_edit_polygon",
+    "make_monotone_blend",
+    "make_monotone_design",
     "make_profile_test",
 ]

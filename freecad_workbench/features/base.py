@@ -11,7 +11,24 @@ import FreeCAD
 OUTPUT = 8  # App::Property::Output: setting the property does not touch the object
 
 
-class FeatureProxy:
+class StatelessProxy:
+    """A proxy that keeps everything in properties. FreeCAD 0.20 stores a proxy with
+    __getstate__/__setstate__, older versions with dumps/loads."""
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+class FeatureProxy(StatelessProxy):
     """Base of the FeaturePython proxies. Subclasses set Type, GROUP, PROPERTIES
     ((type, name, tooltip, default, editor mode) tuples; a "Status" and a "Version"
     property are expected among them), OUTPUTS (properties set by recompute) and
@@ -21,6 +38,7 @@ class FeatureProxy:
     VERSION = 1
     GROUP = "FairSplines"
     PROPERTIES = ()
+    ENUMERATIONS = {}  # {property name: choices} of App::PropertyEnumeration properties
     OUTPUTS = ("Status",)
 
     def __init__(self, obj):
@@ -38,17 +56,21 @@ class FeatureProxy:
             obj.Version = self.VERSION  # nothing to convert yet
 
     def ensure_properties(self, obj):
-        """Add any missing property with its default; keep the values of existing ones."""
+        """Add any missing property with its default; keep the values of existing ones;
+        bring enumerations up to date, keeping a value that is still a choice."""
         for type_, name, tooltip, default, mode in self.PROPERTIES:
+            choices = list(self.ENUMERATIONS.get(name, ()))
             if name not in obj.PropertiesList:
                 obj.addProperty(type_, name, self.GROUP, tooltip, OUTPUT if name in self.OUTPUTS else 0)
-                self.init_property(obj, name)
+                if choices:
+                    setattr(obj, name, choices)
                 if default is not None:
                     setattr(obj, name, default)
+            elif choices and list(obj.getEnumerationsOfProperty(name)) != choices:
+                value = getattr(obj, name)
+                setattr(obj, name, choices)
+                setattr(obj, name, value if value in choices else default)
             obj.setEditorMode(name, mode)
-
-    def init_property(self, obj, name):
-        """Hook for a new property that needs more than a default (e.g. an enumeration)."""
 
     def build(self, obj):
         raise NotImplementedError
@@ -61,20 +83,6 @@ class FeatureProxy:
             return
         obj.Shape = shape
         set_if_changed(obj, "Status", "ok")
-
-    # FreeCAD 0.20 stores a proxy with __getstate__/__setstate__, older versions with
-    # dumps/loads. The proxies keep everything in properties.
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
 
 def set_if_changed(obj, name, value):

@@ -110,10 +110,7 @@ class BasicCurveFeature(FeatureProxy):
     VERSION = 1
     GROUP = "Basic curve"
     PROPERTIES = _PROPERTIES
-
-    def init_property(self, obj, name):
-        if name == "Kind":
-            obj.Kind = list(KINDS)
+    ENUMERATIONS = {"Kind": KINDS}
 
     def ensure_properties(self, obj):
         super().ensure_properties(obj)

@@ -51,17 +51,7 @@ class CsrFit(FeatureProxy):
     VERSION = 1
     GROUP = "Csr fit"
     PROPERTIES = _PROPERTIES
-
-    def init_property(self, obj, name):
-        if name == "Parametrization":
-            obj.Parametrization = list(PARAMETRIZATIONS)
-
-    def ensure_properties(self, obj):
-        super().ensure_properties(obj)
-        if list(obj.getEnumerationsOfProperty("Parametrization")) != list(PARAMETRIZATIONS):
-            value = obj.Parametrization
-            obj.Parametrization = list(PARAMETRIZATIONS)
-            obj.Parametrization = value if value in PARAMETRIZATIONS else "chordal"
+    ENUMERATIONS = {"Parametrization": PARAMETRIZATIONS}
 
     def build(self, obj):
         origins = []

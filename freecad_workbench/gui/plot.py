@@ -7,6 +7,8 @@ FreeCAD GUI: a Qt window). matplotlib is imported only when a plot is made.
     from freecad_workbench.gui.plot import curvature_plot
     curvature_plot([(csr, "csr-spline"), (classic, "classic C2")], path="curvature.png")
 """
+import numpy as np
+
 import Part
 
 from ..analysis import curvature_profile
@@ -14,12 +16,14 @@ from ..analysis import curvature_profile
 DEFAULT_SAMPLES = 1024
 
 
-def curvature_plot(edges_with_labels, path=None, n=DEFAULT_SAMPLES, title="Curvature"):
+def curvature_plot(edges_with_labels, path=None, n=DEFAULT_SAMPLES, title="Curvature", marks=()):
     """Plot curvature against arc length.
 
     edges_with_labels: items (edge or curve, label), or bare edges/curves (labelled
     "curve 1", "curve 2", ...). Curvature is signed for planar curves.
     path: write a PNG there (Agg backend) instead of showing a window.
+    marks: points to mark on the lines, as (index of the curve, parameter u, label, matplotlib
+    marker such as "v"), drawn at u's arc length and curvature.
     Returns the matplotlib Figure.
     """
     items = []
@@ -42,6 +46,10 @@ def curvature_plot(edges_with_labels, path=None, n=DEFAULT_SAMPLES, title="Curva
     ax = fig.add_subplot(1, 1, 1)
     for profile, label in items:
         ax.plot(profile.s, profile.kappa, label=label, linewidth=1.5)
+    for index, u, label, marker in marks:
+        profile = items[index][0]
+        s, kappa = np.interp(u, profile.u, profile.s), np.interp(u, profile.u, profile.kappa)
+        ax.plot([s], [kappa], marker, color="#d42a2a", markersize=9, linestyle="none", label=label)
     ax.axhline(0.0, color="0.5", linewidth=0.8)
     ax.set_xlabel("arc length")
     signed = all(profile.signed for profile, _ in items)

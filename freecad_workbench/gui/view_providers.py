@@ -1,10 +1,14 @@
 """View providers of the FairSplines features (GUI only)."""
+from ..features.base import StatelessProxy
 from . import icon_path
 
 
-class ViewProviderCsrFit:
-    """Tree icon of a csr fit: the fit icon, or a red-marked one while Status holds an error
-    (the message is in the Status property and the report view)."""
+class StatusIconViewProvider(StatelessProxy):
+    """Tree icon of a feature with a Status property: its icon (ICON, named after its
+    command), or the red-marked ICON + "Error" while Status holds an error (the message is in
+    the Status property and the report view)."""
+
+    ICON = "FairSplines"
 
     def __init__(self, vobj):
         vobj.Proxy = self
@@ -15,8 +19,8 @@ class ViewProviderCsrFit:
     def getIcon(self):
         obj = getattr(self, "Object", None)
         if obj is not None and getattr(obj, "Status", "ok") != "ok":
-            return icon_path("FairSplines_CsrFitError")
-        return icon_path("FairSplines_CsrFit")
+            return icon_path(self.ICON + "Error")
+        return icon_path(self.ICON)
 
     def updateData(self, obj, prop):
         if prop == "Status" and obj.ViewObject is not None:
@@ -25,14 +29,36 @@ class ViewProviderCsrFit:
     def onChanged(self, vobj, prop):
         pass
 
-    def __getstate__(self):
-        return None
 
-    def __setstate__(self, state):
-        return None
+class ViewProviderCsrFit(StatusIconViewProvider):
+    ICON = "FairSplines_CsrFit"
 
-    def dumps(self):
-        return None
 
-    def loads(self, state):
-        return None
+class ViewProviderMonotoneBlend(StatusIconViewProvider):
+    ICON = "FairSplines_MonotoneBlend"
+
+
+class ViewProviderMonotoneDesign(StatusIconViewProvider):
+    """Double-click (or Edit) opens the Monotone design task panel."""
+
+    ICON = "FairSplines_MonotoneDesign"
+
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        import FreeCADGui
+
+        from .monotone_commands import MonotoneDesignTaskPanel
+
+        FreeCADGui.Control.showDialog(MonotoneDesignTaskPanel(vobj.Object))
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        import FreeCADGui
+
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def doubleClicked(self, vobj):
+        vobj.Document.setEdit(vobj.Object.Name)
+        return True
