@@ -377,6 +377,7 @@ BSplineCurve fitCubic(PointsRef q, const Eigen::VectorXd& t, bool closed, double
   const Weight weight{epsilon / size, rule};
   const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
   PointMatrix poles;
+  if (window <= 0) window = q.rows() <= (1 << 18) ? q.rows() : 4096;
   if (strategy.value_or(defaultStrategy(q.rows())) == CsrStrategy::Vectorised) {
     if (q.cols() == 2) csrPolesFast<2>(q, h, closed, weight, quasiOnly, poles, window);
     else csrPolesFast<3>(q, h, closed, weight, quasiOnly, poles, window);
