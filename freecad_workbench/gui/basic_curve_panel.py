@@ -3,11 +3,10 @@ degrees), and where it lies (plane and position of its placement). Every change
 recomputes at once; OK keeps the changes as one undo step, Cancel restores the curve the
 panel opened with."""
 import FreeCAD
-import FreeCADGui
 
 from ..features.basic_curve import KIND_DEFAULTS, KIND_PROPERTIES, KINDS
 from . import icon_path
-from .live_edit import LiveEdit
+from .live_edit import LiveEdit, LiveEditPanel
 
 translate = FreeCAD.Qt.translate
 
@@ -48,7 +47,7 @@ def plane_of(rotation):
     return None
 
 
-class BasicCurvePanel:
+class BasicCurvePanel(LiveEditPanel):
     """Task panel editing a BasicCurve object live."""
 
     def __init__(self, obj):
@@ -241,27 +240,3 @@ class BasicCurvePanel:
 
     # --- task dialog -----------------------------------------------------------------
 
-    def getStandardButtons(self):
-        from PySide2 import QtWidgets
-
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def accept(self):
-        self.session.commit()
-        self._close()
-        return True
-
-    def reject(self):
-        self.session.abort()
-        self._close()
-        return True
-
-    def finish(self):
-        pass
-
-    def _close(self):
-        gui_doc = FreeCADGui.getDocument(self.doc.Name)
-        if gui_doc is not None and gui_doc.getInEdit() is not None:
-            gui_doc.resetEdit()
-        else:
-            FreeCADGui.Control.closeDialog()

@@ -6,11 +6,10 @@ recomputes at once; the polygon is drawn green, moved poles orange, the current 
 changes as one undo step, Cancel restores the poles the panel opened with.
 """
 import FreeCAD
-import FreeCADGui
 
 from ..features.edit_polygon import reset_pole, set_pole, source_edge
 from . import icon_path
-from .live_edit import LiveEdit
+from .live_edit import LiveEdit, LiveEditPanel
 from .overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
@@ -18,7 +17,7 @@ translate = FreeCAD.Qt.translate
 PICK_RADIUS = 12  # pixels: how near a click must be to a pole to grab it
 
 
-class EditPolygonPanel:
+class EditPolygonPanel(LiveEditPanel):
     """Task panel: pick and move the poles of an Edit polygon feature."""
 
     def __init__(self, obj):
@@ -261,21 +260,6 @@ class EditPolygonPanel:
 
     # --- task dialog -----------------------------------------------------------------
 
-    def getStandardButtons(self):
-        from PySide2 import QtWidgets
-
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def accept(self):
-        self.session.commit()
-        self._close()
-        return True
-
-    def reject(self):
-        self.session.abort()
-        self._close()
-        return True
-
     def finish(self):
         """Remove the overlay and the mouse callbacks."""
         if self.view is not None:
@@ -287,11 +271,4 @@ class EditPolygonPanel:
         self._callbacks = []
         self.overlay.detach()
 
-    def _close(self):
-        gui_doc = FreeCADGui.getDocument(self.doc.Name)
-        if gui_doc is not None and gui_doc.getInEdit() is not None:
-            gui_doc.resetEdit()
-        else:
-            self.finish()
-            FreeCADGui.Control.closeDialog()
 

@@ -69,3 +69,38 @@ class LiveEdit:
                 restored = True
         if restored or any("Touched" in o.State for o in self.doc.Objects):
             self.doc.recompute()
+
+
+class LiveEditPanel:
+    """OK / Cancel of a task panel that edits through a LiveEdit `self.session` in the
+    document `self.doc`: OK commits the edit as one undo step, Cancel restores. The panel
+    defines finish() (remove what it drew); closing goes through the view provider's
+    unsetEdit when the object is in edit mode, which calls finish()."""
+
+    def getStandardButtons(self):
+        from PySide2 import QtWidgets
+
+        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+
+    def accept(self):
+        self.session.commit()
+        self._close()
+        return True
+
+    def reject(self):
+        self.session.abort()
+        self._close()
+        return True
+
+    def finish(self):
+        pass
+
+    def _close(self):
+        import FreeCADGui
+
+        gui_doc = FreeCADGui.getDocument(self.doc.Name)
+        if gui_doc is not None and gui_doc.getInEdit() is not None:
+            gui_doc.resetEdit()  # unsetEdit calls finish() and closes the dialog
+        else:
+            self.finish()
+            FreeCADGui.Control.closeDialog()

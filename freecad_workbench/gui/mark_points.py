@@ -12,11 +12,10 @@ way (its marks stay on the same points). OK keeps the changes as one undo step, 
 restores the marks the panel opened with.
 """
 import FreeCAD
-import FreeCADGui
 
 from ..features.design_spline import get_marks, piece_curves, set_marks
 from . import icon_path
-from .live_edit import LiveEdit
+from .live_edit import LiveEdit, LiveEditPanel
 from .overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
@@ -33,7 +32,7 @@ class MarkRow:
         self.slider, self.spin, self.remove = slider, spin, remove
 
 
-class MarkPointsPanel:
+class MarkPointsPanel(LiveEditPanel):
     """Task panel: sliders for the marks of a Design spline, with live preview."""
 
     def __init__(self, obj):
@@ -292,29 +291,7 @@ class MarkPointsPanel:
 
     # --- task dialog -----------------------------------------------------------------
 
-    def getStandardButtons(self):
-        from PySide2 import QtWidgets
-
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
-
-    def accept(self):
-        self.session.commit()
-        self._close()
-        return True
-
-    def reject(self):
-        self.session.abort()
-        self._close()
-        return True
-
     def finish(self):
         """Remove the overlay (called when the edit ends, however it ends)."""
         self.overlay.detach()
 
-    def _close(self):
-        gui_doc = FreeCADGui.getDocument(self.doc.Name)
-        if gui_doc is not None and gui_doc.getInEdit() is not None:
-            gui_doc.resetEdit()  # unsetEdit calls finish() and closes the dialog
-        else:
-            self.finish()
-            FreeCADGui.Control.closeDialog()
