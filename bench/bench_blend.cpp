@@ -7,24 +7,11 @@
 #include <cstdio>
 #include <vector>
 
+#include "bench_timing.hpp"
 #include "fairsplines/blend_surface.hpp"
 
 using namespace fairsplines;
-using Clock = std::chrono::steady_clock;
-
-namespace {
-template <class F>
-double medianSeconds(F&& f, int repeats) {
-  std::vector<double> t;
-  for (int r = 0; r < repeats; ++r) {
-    const auto t0 = Clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  std::nth_element(t.begin(), t.begin() + repeats / 2, t.end());
-  return t[repeats / 2];
-}
-}  // namespace
+using fairsplines::bench::medianSeconds;
 
 int main() {
   const double pi = std::acos(-1.0);

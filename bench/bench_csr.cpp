@@ -6,12 +6,13 @@
 #include <cstdio>
 #include <algorithm>
 
+#include "bench_timing.hpp"
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/csr.hpp"
 #include "fairsplines/occt.hpp"
 
 using namespace fairsplines;
-using Clock = std::chrono::steady_clock;
+using fairsplines::bench::bestSeconds;
 
 namespace {
 
@@ -25,16 +26,6 @@ PointMatrix samples(int n) {
   return q;
 }
 
-template <class F>
-double bestSeconds(F&& f, int repeats) {
-  double best = 1e300;
-  for (int r = 0; r < repeats; ++r) {
-    const auto t0 = Clock::now();
-    f();
-    best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  return best;
-}
 
 }  // namespace
 
