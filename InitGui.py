@@ -25,7 +25,7 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, commands, design_commands, monotone_commands
+        from freecad_workbench.gui import ICON_DIR, blend_commands, commands, design_commands, monotone_commands
 
         Gui.addIconPath(ICON_DIR)
         self.appendToolbar("FairSplines", list(commands.COMMANDS))
@@ -38,6 +38,9 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
         # Monotone curvature: its own toolbar, and a submenu.
         self.appendToolbar("FairSplines monotone", list(monotone_commands.COMMANDS))
         self.appendMenu(["FairSplines", "Monotone curvature"], list(monotone_commands.COMMANDS))
+        # Basic shapes blended into NURBS: its own toolbar, and a submenu.
+        self.appendToolbar("FairSplines blend", list(blend_commands.COMMANDS))
+        self.appendMenu(["FairSplines", "Blending"], list(blend_commands.COMMANDS))
 
     def Activated(self):
         pass

@@ -2,6 +2,7 @@
 factories. Headless: nothing here imports the GUI at import time; a view provider is
 attached only when FreeCAD.GuiUp."""
 from .basic_curve import BasicCurveFeature, make_basic_curve
+from .blend_shape import BlendShape, make_blend_shape
 from .csr_fit import CsrFit, make_csr_fit
 from .design_spline import DesignSpline, make_design_spline
 from .edit_polygon import EditPolygon, make_edit_polygon
@@ -11,6 +12,7 @@ from .profile_test import ProfileTest, make_profile_test
 
 __all__ = [
     "BasicCurveFeature",
+    "BlendShape",
     "CsrFit",
     "DesignSpline",
     "EditPolygon",
@@ -18,6 +20,7 @@ __all__ = [
     "MonotoneDesign",
     "ProfileTest",
     "make_basic_curve",
+    "make_blend_shape",
     "make_csr_fit",
     "make_design_spline",
     "make_edit_polygon",

@@ -1,0 +1,224 @@
+"""Blend basic shape (blending paper, Section 4.2): a basic shape of revolution (sphere zone,
+cylinder, cone or torus) kept exact and joined at the end of its profile to a default
+free-form ring by a C2 transition strip (`fw.blend_basic_shape`), or by the naive strip of
+Fig. 2a (`fw.blend_naive`, for comparison). Headless; in the GUI the shell is shown with
+zebra shading so that the seams can be judged (gui/blend_commands.py).
+
+    from freecad_workbench.features.blend_shape import make_blend_shape
+    blend = make_blend_shape(doc, "Torus", MajorRadius=20, MinorRadius=5)
+
+The shape lies around the Z axis of the object's Placement. Angles are in degrees: around
+the axis a full turn (the partition may be non-uniform), along the profile latitudes
+(sphere zone) or tube angles (torus); heights (cylinder, cone) are lengths. With `Uniform`
+on, the lists are generated from `AroundCount` arcs over the full turn and `ProfileCount`
+pieces from `ProfileStart` to `ProfileEnd`; off, the kind's lists are used as they are.
+`Patches` counts the patches per role. Bad input (angles that do not increase, a radius
+that is not positive, a ring that would reach the axis) keeps the last good shape and puts
+the reason in `Status`.
+"""
+import math
+
+import FreeCAD
+
+from .. import blend, shapes
+from ..errors import InputError
+from .base import FeatureProxy, set_if_changed
+from .undo import undo_step
+
+KINDS = ("Sphere zone", "Cylinder", "Cone", "Torus")
+METHODS = ("rho", "sigma", "mixed")
+
+# The dimensions of each kind: the lengths, then (around list, profile list).
+KIND_LENGTHS = {
+    "Sphere zone": ("Radius",),
+    "Cylinder": ("Radius",),
+    "Cone": ("Radius0", "Slope"),
+    "Torus": ("MajorRadius", "MinorRadius"),
+}
+KIND_LISTS = {
+    "Sphere zone": ("Longitudes", "Latitudes"),
+    "Cylinder": ("Angles", "Heights"),
+    "Cone": ("Angles", "Heights"),
+    "Torus": ("AnglesU", "AnglesV"),
+}
+# Whether the profile list of a kind holds angles (degrees) rather than lengths.
+PROFILE_IN_DEGREES = {"Sphere zone": True, "Cylinder": False, "Cone": False, "Torus": True}
+UNIFORM_PROPERTIES = ("AroundCount", "ProfileCount", "ProfileStart", "ProfileEnd")
+KIND_PROPERTIES = {k: KIND_LENGTHS[k] + KIND_LISTS[k] + UNIFORM_PROPERTIES for k in KINDS}
+
+
+def _uniform(start, end, count):
+    return [start + (end - start) * i / count for i in range(count + 1)]
+
+
+# A pleasant default of each kind (model units, degrees): uniform, and the same lists spelled out.
+KIND_DEFAULTS = {
+    "Sphere zone": dict(Radius=10.0, Longitudes=_uniform(0.0, 360.0, 6), Latitudes=[-40.0, -10.0, 20.0, 45.0],
+                        ProfileStart=-40.0, ProfileEnd=45.0),
+    "Cylinder": dict(Radius=10.0, Angles=_uniform(0.0, 360.0, 6), Heights=[0.0, 5.0, 10.0, 15.0],
+                     ProfileStart=0.0, ProfileEnd=15.0),
+    "Cone": dict(Radius0=10.0, Slope=-0.3, Angles=_uniform(0.0, 360.0, 6), Heights=[0.0, 4.0, 8.0, 12.0],
+                 ProfileStart=0.0, ProfileEnd=12.0),
+    "Torus": dict(MajorRadius=20.0, MinorRadius=5.0, AnglesU=_uniform(0.0, 360.0, 6),
+                  AnglesV=[-90.0, -30.0, 30.0, 90.0], ProfileStart=-90.0, ProfileEnd=90.0),
+}
+for _values in KIND_DEFAULTS.values():
+    _values.update(AroundCount=6, ProfileCount=3)
+
+_PROPERTIES = (
+    ("App::PropertyEnumeration", "Kind", "Which basic shape", None, 0),
+    ("App::PropertyLength", "Radius", "Sphere zone, cylinder: radius", None, 0),
+    ("App::PropertyLength", "Radius0", "Cone: radius at height 0", None, 0),
+    ("App::PropertyFloat", "Slope", "Cone: radius = Radius0 + Slope * height", None, 0),
+    ("App::PropertyLength", "MajorRadius", "Torus: distance of the tube's centre from the axis", None, 0),
+    ("App::PropertyLength", "MinorRadius", "Torus: radius of the tube", None, 0),
+    ("App::PropertyFloatList", "Longitudes", "Sphere zone: increasing angles around the axis over a full turn "
+     "(degrees)", None, 0),
+    ("App::PropertyFloatList", "Latitudes", "Sphere zone: increasing latitudes in [-90, 90] (degrees); the ring "
+     "joins at the last", None, 0),
+    ("App::PropertyFloatList", "Angles", "Cylinder, cone: increasing angles around the axis over a full turn "
+     "(degrees)", None, 0),
+    ("App::PropertyFloatList", "Heights", "Cylinder, cone: increasing heights along the axis; the ring joins "
+     "at the last", None, 0),
+    ("App::PropertyFloatList", "AnglesU", "Torus: increasing angles around the axis over a full turn (degrees)",
+     None, 0),
+    ("App::PropertyFloatList", "AnglesV", "Torus: increasing angles around the tube, 0 = outer equator, less "
+     "than a full turn (degrees); the ring joins at the last", None, 0),
+    ("App::PropertyBool", "Uniform", "Generate the lists: AroundCount equal arcs around, ProfileCount equal "
+     "pieces from ProfileStart to ProfileEnd", True, 0),
+    ("App::PropertyInteger", "AroundCount", "Uniform: number of arcs around the axis", 6, 0),
+    ("App::PropertyInteger", "ProfileCount", "Uniform: number of pieces along the profile", 3, 0),
+    ("App::PropertyFloat", "ProfileStart", "Uniform: start of the profile (degrees, or a height)", None, 0),
+    ("App::PropertyFloat", "ProfileEnd", "Uniform: end of the profile, where the ring joins (degrees, or a "
+     "height)", None, 0),
+    ("App::PropertyEnumeration", "Method", "Reparameterization of the transition (Section 3): rho, sigma or "
+     "mixed", "rho", 0),
+    ("App::PropertyBool", "Naive", "Build the naive blend of Fig. 2a instead (not C2), for comparison", False, 0),
+    ("App::PropertyString", "Patches", "Number of patches per role (basic, transition, freeform)", "", 1),
+    ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
+    ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
+)
+_DIMENSIONS = tuple(sorted({p for props in KIND_PROPERTIES.values() for p in props}))
+
+
+class BlendShape(FeatureProxy):
+    """Proxy of a Part::FeaturePython: a basic shape blended into a free-form ring, as a
+    sewn shell."""
+
+    Type = "BlendShape"
+    VERSION = 1
+    GROUP = "Blend basic shape"
+    PROPERTIES = _PROPERTIES
+    ENUMERATIONS = {"Kind": KINDS, "Method": METHODS}
+    OUTPUTS = ("Status", "Patches")
+
+    def ensure_properties(self, obj):
+        super().ensure_properties(obj)
+        show_kind_properties(obj)
+
+    def onChanged(self, obj, prop):
+        if prop in ("Kind", "Uniform"):
+            show_kind_properties(obj)
+
+    def build(self, obj):
+        result = blend_result(obj)
+        counts = {role: 0 for role in ("basic", "transition", "freeform")}
+        for role, _ in result.patches:
+            counts[role] = counts.get(role, 0) + 1
+        set_if_changed(obj, "Patches", ", ".join(f"{role} {n}" for role, n in counts.items()))
+        shape = result.shell
+        shape.Placement = obj.Placement
+        return shape
+
+
+def show_kind_properties(obj):
+    """Show the dimensions of obj's kind (the lists, or the uniform counts and range) in the
+    property editor, hide the others."""
+    if "Kind" not in obj.PropertiesList or "Uniform" not in obj.PropertiesList:
+        return
+    used = set(KIND_LENGTHS.get(obj.Kind, ()))
+    used |= set(UNIFORM_PROPERTIES) if obj.Uniform else set(KIND_LISTS.get(obj.Kind, ()))
+    for name in _DIMENSIONS:
+        if name in obj.PropertiesList:
+            obj.setEditorMode(name, 0 if name in used else 2)
+
+
+def _length(value):
+    return float(getattr(value, "Value", value))
+
+
+def angle_lists(obj):
+    """(around, profile) as the object uses them, in degrees (profile: lengths for a
+    cylinder or cone): generated when Uniform is on, else the kind's lists."""
+    if obj.Uniform:
+        if obj.AroundCount < 1 or obj.ProfileCount < 1:
+            raise InputError("the counts must be at least 1")
+        return (_uniform(0.0, 360.0, obj.AroundCount),
+                _uniform(float(obj.ProfileStart), float(obj.ProfileEnd), obj.ProfileCount))
+    around, profile = KIND_LISTS[obj.Kind]
+    return list(getattr(obj, around)), list(getattr(obj, profile))
+
+
+def basic_shape(obj):
+    """The fw.shapes object of obj, about the Z axis through the origin (local coordinates)."""
+    around_deg, profile = angle_lists(obj)
+    if len(around_deg) < 2 or len(profile) < 2:
+        raise InputError("each list needs at least 2 values")
+    around = [math.radians(a) for a in around_deg]
+    if PROFILE_IN_DEGREES[obj.Kind]:
+        profile = [math.radians(a) for a in profile]
+    center = (0.0, 0.0, 0.0)
+    if obj.Kind == "Sphere zone":
+        return shapes.SphereZone(center, _length(obj.Radius), around, profile)
+    if obj.Kind == "Cylinder":
+        return shapes.Cylinder(center, _length(obj.Radius), around, profile)
+    if obj.Kind == "Cone":
+        return shapes.Cone(center, _length(obj.Radius0), float(obj.Slope), around, profile)
+    return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile)
+
+
+def blend_result(obj):
+    """fw.BlendResult of obj (local coordinates): the C2 blend, or the naive one."""
+    shape = basic_shape(obj)
+    if obj.Naive:
+        return blend.blend_naive(shape)
+    return blend.blend_basic_shape(shape, method=obj.Method)
+
+
+def is_blend_shape(obj):
+    return isinstance(getattr(obj, "Proxy", None), BlendShape)
+
+
+def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, **dimensions):
+    """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
+    step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
+    units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
+    Uniform is given. Bad dimensions leave the object with the message in its Status;
+    unknown kinds, methods or dimensions raise InputError."""
+    if kind not in KINDS:
+        raise InputError(f"unknown kind {kind!r}: use one of {', '.join(KINDS)}")
+    if method not in METHODS:
+        raise InputError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
+    allowed = set(KIND_PROPERTIES[kind]) | {"Uniform"}
+    unknown = sorted(set(dimensions) - allowed)
+    if unknown:
+        raise InputError(f"{kind} has no dimension {', '.join(unknown)}: it has {', '.join(sorted(allowed))}")
+    values = dict(KIND_DEFAULTS[kind], **dimensions)
+    if "Uniform" not in dimensions:
+        values["Uniform"] = not any(p in dimensions for p in KIND_LISTS[kind])
+    with undo_step(doc, "Create blend basic shape"):
+        obj = doc.addObject("Part::FeaturePython", name or "BlendShape")
+        BlendShape(obj)
+        obj.Kind = kind
+        obj.Method = method
+        obj.Naive = bool(naive)
+        for key, value in values.items():
+            setattr(obj, key, [float(v) for v in value] if isinstance(value, (list, tuple)) else value)
+        if placement is not None:
+            obj.Placement = placement
+        if FreeCAD.GuiUp:
+            from ..gui.blend_commands import ViewProviderBlendShape
+
+            ViewProviderBlendShape(obj.ViewObject)
+        doc.recompute()
+    return obj

@@ -1,0 +1,362 @@
+"""The blending command (GUI only): a Blend basic shape, its task panel and its view provider.
+The command records a replayable macro line.
+
+FairSplines_BlendBasicShape   a sphere zone, cylinder, cone or torus joined C2 to a free-form
+                              ring (blending paper, Section 4.2); its panel opens and previews
+                              live; the shell is shown with zebra shading to judge the seams
+"""
+import FreeCAD
+import FreeCADGui
+
+from ..features.blend_shape import (
+    KIND_DEFAULTS,
+    KIND_LENGTHS,
+    KIND_LISTS,
+    KIND_PROPERTIES,
+    KINDS,
+    METHODS,
+    PROFILE_IN_DEGREES,
+    angle_lists,
+)
+from ..errors import InputError
+from . import icon_path
+from .design_commands import _edit_later, _new_object
+from .design_view_providers import ViewProviderProfileTest, _ViewProvider, _local_shape
+from .live_edit import LiveEdit, LiveEditPanel
+
+translate = FreeCAD.Qt.translate
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+
+NAME = "FairSplines_BlendBasicShape"
+COMMANDS = (NAME,)
+
+# Zebra mesh of each face (a patch of the shell): samples per face, at least 4 per knot span.
+FACE_SAMPLES = 12
+
+_LABELS = {
+    "Radius": "Radius",
+    "Radius0": "Radius at height 0",
+    "Slope": "Slope (radius per height)",
+    "MajorRadius": "Major radius",
+    "MinorRadius": "Minor radius",
+    "Longitudes": "Longitudes (°)",
+    "Latitudes": "Latitudes (°)",
+    "Angles": "Angles (°)",
+    "Heights": "Heights",
+    "AnglesU": "Angles around the axis (°)",
+    "AnglesV": "Angles around the tube (°)",
+    "AroundCount": "Arcs around",
+    "ProfileCount": "Pieces along the profile",
+    "ProfileStart": "Profile from",
+    "ProfileEnd": "Profile to",
+}
+
+
+# --- view provider ---------------------------------------------------------------------------
+
+
+def update_zebra_faces(node, faces, samples=FACE_SAMPLES):
+    """Mesh every face's surface into one ZebraNode (gui/zebra.py), or clear it."""
+    import numpy as np
+
+    from .zebra import zebra_mesh
+
+    if not faces:
+        node.update(None)
+        return
+    points, normals, index, offset = [], [], [], 0
+    for face in faces:
+        p, n, quads, _ = zebra_mesh(face.Surface, samples, samples)
+        if face.Orientation == "Reversed":
+            n = -n
+        points.append(p)
+        normals.append(n)
+        index.append(np.c_[quads + offset, -np.ones(len(quads), dtype=int)].ravel())
+        offset += len(p)
+    points, normals = np.concatenate(points), np.concatenate(normals)
+    index = np.concatenate(index).tolist()
+    node.clear()
+    node.coords.point.setValues(0, len(points), points.tolist())
+    node.normals.vector.setValues(0, len(normals), normals.tolist())
+    node.faces.coordIndex.setValues(0, len(index), index)
+    node.faces.normalIndex.setValues(0, len(index), index)
+    node.vertex_count = len(points)
+
+
+class ViewProviderBlendShape(ViewProviderProfileTest):
+    """The blended shell in the 'Zebra' display mode (the default; gui/zebra.py), every patch
+    meshed, so that the stripes show how the basic shape, the transition and the ring join.
+    Double-click opens the task panel."""
+
+    ICON = "FairSplines_BlendBasicShape"
+    ERROR_ICON = "FairSplines_BlendBasicShapeError"
+
+    def update_zebra(self, force=False):
+        obj = getattr(self, "Object", None)
+        if obj is None or not hasattr(self, "zebra"):
+            return
+        shape = obj.Shape
+        if not force and self.meshed is not None and self.meshed.isEqual(shape):
+            return
+        update_zebra_faces(self.zebra, [] if shape.isNull() else _local_shape(obj).Faces)
+        self.meshed = shape
+
+    def make_panel(self, obj):
+        return BlendShapePanel(obj)
+
+    doubleClicked = _ViewProvider.doubleClicked
+    setupContextMenu = _ViewProvider.setupContextMenu
+
+
+# --- command ---------------------------------------------------------------------------------
+
+
+class BlendBasicShapeCommand:
+    def GetResources(self):
+        return {
+            "Pixmap": icon_path(NAME),
+            "MenuText": QT_TRANSLATE_NOOP(NAME, "Blend basic shape"),
+            "ToolTip": QT_TRANSLATE_NOOP(
+                NAME,
+                "A sphere zone, cylinder, cone or torus kept exact and joined C2 to a free-form ring\n"
+                "(non-uniform partitions allowed). Set it up in the panel; zebra stripes show the seams.",
+            ),
+        }
+
+    def IsActive(self):
+        return FreeCAD.ActiveDocument is not None and not FreeCADGui.Control.activeDialog()
+
+    def Activated(self):
+        doc = FreeCAD.ActiveDocument
+        before = {o.Name for o in doc.Objects}
+        FreeCADGui.doCommand("import FreeCAD")
+        FreeCADGui.doCommand("from freecad_workbench.features.blend_shape import make_blend_shape")
+        FreeCADGui.doCommand(f"make_blend_shape(FreeCAD.getDocument({doc.Name!r}), 'Sphere zone')")
+        obj = _new_object(doc, before)
+        if obj is not None:
+            _edit_later(obj)
+
+
+# --- task panel ------------------------------------------------------------------------------
+
+
+def format_list(values):
+    return ", ".join(f"{v:g}" for v in values)
+
+
+def parse_list(text):
+    """Comma- (or space-) separated numbers -> [float]; InputError names a bad entry."""
+    values = []
+    for item in text.replace(";", ",").replace(" ", ",").split(","):
+        if item.strip():
+            try:
+                values.append(float(item))
+            except ValueError:
+                raise InputError(f"not a number: {item.strip()!r}") from None
+    return values
+
+
+class BlendShapePanel(LiveEditPanel):
+    """Task panel of a Blend basic shape: kind, dimensions, the partitions (uniform counts
+    and range, or the lists as comma-separated values), method and the naive variant. Every
+    change recomputes at once; OK keeps the changes as one undo step, Cancel restores."""
+
+    def __init__(self, obj):
+        from PySide2 import QtGui, QtWidgets
+
+        self.obj = obj
+        self.doc = obj.Document
+        dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
+        self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
+                                ["Kind", "Uniform", "Method", "Naive"] + dimensions)
+        self._updating = False
+        self.widgets = {}
+
+        self.form = QtWidgets.QWidget()
+        self.form.setWindowTitle(translate("FairSplines", "Blend basic shape"))
+        self.form.setWindowIcon(QtGui.QIcon(icon_path(NAME)))
+        layout = QtWidgets.QVBoxLayout(self.form)
+        top = QtWidgets.QFormLayout()
+        self.kind = QtWidgets.QComboBox()
+        self.kind.addItems([translate("FairSplines", k) for k in KINDS])
+        self.kind.setCurrentIndex(KINDS.index(obj.Kind))
+        self.kind.currentIndexChanged.connect(lambda i: self.set_kind(KINDS[i]))
+        top.addRow(translate("FairSplines", "Kind"), self.kind)
+        self.uniform = QtWidgets.QCheckBox(translate("FairSplines", "Uniform partitions"))
+        self.uniform.setChecked(bool(obj.Uniform))
+        self.uniform.toggled.connect(self.set_uniform)
+        top.addRow(self.uniform)
+        layout.addLayout(top)
+        self.dimensions_box = QtWidgets.QGroupBox(translate("FairSplines", "Dimensions"))
+        self.dimensions = QtWidgets.QFormLayout(self.dimensions_box)
+        layout.addWidget(self.dimensions_box)
+        bottom = QtWidgets.QFormLayout()
+        self.method = QtWidgets.QComboBox()
+        self.method.addItems(list(METHODS))
+        self.method.setCurrentIndex(METHODS.index(obj.Method))
+        self.method.currentIndexChanged.connect(lambda i: self.set_method(METHODS[i]))
+        bottom.addRow(translate("FairSplines", "Method"), self.method)
+        self.naive = QtWidgets.QCheckBox(translate("FairSplines", "Naive blend (Fig. 2a, not C2)"))
+        self.naive.setChecked(bool(obj.Naive))
+        self.naive.toggled.connect(self.set_naive)
+        bottom.addRow(self.naive)
+        layout.addLayout(bottom)
+        self.patches_label = QtWidgets.QLabel()
+        layout.addWidget(self.patches_label)
+        self.status_label = QtWidgets.QLabel()
+        self.status_label.setWordWrap(True)
+        layout.addWidget(self.status_label)
+        layout.addStretch(1)
+        self._build_dimensions()
+        self.refresh()
+
+    # --- widgets ---------------------------------------------------------------------
+
+    def _spin(self, lower, upper, suffix="", decimals=4):
+        from PySide2 import QtWidgets
+
+        spin = QtWidgets.QDoubleSpinBox()
+        spin.setRange(lower, upper)
+        spin.setDecimals(decimals)
+        spin.setSuffix(suffix)
+        spin.setKeyboardTracking(False)
+        return spin
+
+    def _build_dimensions(self):
+        """Rows for the lengths of the kind, then the counts and range (uniform) or the lists."""
+        from PySide2 import QtWidgets
+
+        while self.dimensions.rowCount():
+            self.dimensions.removeRow(0)
+        self.widgets = {}
+        kind = self.obj.Kind
+        profile_suffix = " °" if PROFILE_IN_DEGREES[kind] else " mm"
+        names = list(KIND_LENGTHS[kind])
+        names += ["AroundCount", "ProfileCount", "ProfileStart", "ProfileEnd"] if self.obj.Uniform else list(
+            KIND_LISTS[kind])
+        self._updating = True
+        try:
+            for name in names:
+                label = translate("FairSplines", _LABELS.get(name, name))
+                value = getattr(self.obj, name)
+                if name in KIND_LISTS[kind]:
+                    edit = QtWidgets.QLineEdit(format_list(value))
+                    edit.editingFinished.connect(lambda n=name: self.set_list_text(n, self.widgets[n].text()))
+                    widget = edit
+                elif name in ("AroundCount", "ProfileCount"):
+                    widget = QtWidgets.QSpinBox()
+                    widget.setRange(1, 64)
+                    widget.setKeyboardTracking(False)
+                    widget.setValue(int(value))
+                    widget.valueChanged.connect(lambda v, n=name: self.set_dimension(n, int(v)))
+                else:
+                    if name == "Slope":
+                        widget = self._spin(-1e3, 1e3)
+                    elif name in ("ProfileStart", "ProfileEnd"):
+                        widget = self._spin(-1e9, 1e9, profile_suffix)
+                    else:
+                        widget = self._spin(0.0, 1e9, " mm")
+                    widget.setValue(float(getattr(value, "Value", value)))
+                    widget.valueChanged.connect(lambda v, n=name: self.set_dimension(n, v))
+                self.dimensions.addRow(label, widget)
+                self.widgets[name] = widget
+        finally:
+            self._updating = False
+
+    # --- edits -----------------------------------------------------------------------
+
+    def _apply(self, changes):
+        self.session.begin()
+        for name, value in changes:
+            setattr(self.obj, name, value)
+        self.doc.recompute()
+        self.refresh()
+
+    def set_dimension(self, name, value):
+        """Set one dimension (a length, a count, a list) and recompute."""
+        if not self._updating:
+            self._apply([(name, value)])
+
+    def set_list_text(self, name, text):
+        """Set one of the kind's lists from comma-separated values (degrees, or heights)."""
+        if self._updating:
+            return
+        try:
+            values = parse_list(text)
+        except InputError as exc:
+            self.show_status(str(exc))
+            return
+        if values != list(getattr(self.obj, name)):
+            self._apply([(name, values)])
+        else:
+            self.refresh()
+
+    def set_kind(self, kind):
+        """Switch to another kind, with that kind's default dimensions (partitions as they are
+        now: uniform or not)."""
+        if self._updating or kind == self.obj.Kind:
+            return
+        self._apply([("Kind", kind)] + list(KIND_DEFAULTS[kind].items()))
+        self._build_dimensions()
+        self._select(self.kind, KINDS.index(kind))
+
+    def set_uniform(self, on):
+        """Uniform on: counts and range taken from the lists; off: the lists spelled out
+        from the counts and range, to edit one by one."""
+        on = bool(on)
+        if self._updating or on == bool(self.obj.Uniform):
+            return
+        around_name, profile_name = KIND_LISTS[self.obj.Kind]
+        changes = [("Uniform", on)]
+        try:
+            around, profile = angle_lists(self.obj)
+        except InputError:
+            around = profile = None
+        if around is not None and len(around) > 1 and len(profile) > 1:
+            if on:
+                changes += [("AroundCount", len(around) - 1), ("ProfileCount", len(profile) - 1),
+                            ("ProfileStart", profile[0]), ("ProfileEnd", profile[-1])]
+            else:
+                changes += [(around_name, around), (profile_name, profile)]
+        self._apply(changes)
+        self._build_dimensions()
+        if self.uniform.isChecked() != on:
+            self._updating = True
+            self.uniform.setChecked(on)
+            self._updating = False
+
+    def set_method(self, method):
+        if not self._updating and method != self.obj.Method:
+            self._apply([("Method", method)])
+            self._select(self.method, METHODS.index(method))
+
+    def set_naive(self, on):
+        if not self._updating and bool(on) != bool(self.obj.Naive):
+            self._apply([("Naive", bool(on))])
+            if self.naive.isChecked() != bool(on):
+                self._updating = True
+                self.naive.setChecked(bool(on))
+                self._updating = False
+
+    def _select(self, combo, index):
+        if combo.currentIndex() != index:
+            self._updating = True
+            combo.setCurrentIndex(index)
+            self._updating = False
+
+    def show_status(self, message):
+        self.status_label.setText(translate("FairSplines", "Status: {}").format(message))
+        self.status_label.setStyleSheet("" if message == "ok" else "color: #c00000;")
+
+    def refresh(self):
+        self.patches_label.setText(translate("FairSplines", "Patches: {}").format(self.obj.Patches))
+        self.show_status(self.obj.Status)
+
+
+def register():
+    """Add the command to FreeCADGui (once)."""
+    if NAME not in FreeCADGui.listCommands():
+        FreeCADGui.addCommand(NAME, BlendBasicShapeCommand())
+
+
+register()

@@ -1,0 +1,224 @@
+"""The Blend basic shape command in a real FreeCAD GUI under Xvfb: the command creates the
+feature in one undo step and opens its panel, the panel drives the feature live (kind,
+dimensions, uniform counts or typed lists, method, naive), Cancel restores, the shell is
+shown with zebra stripes; screenshots in out/test-artifacts/."""
+import os
+
+import numpy as np
+import pytest
+
+import FreeCAD
+
+NAME = "FairSplines_BlendBasicShape"
+
+
+def gui():
+    import FreeCADGui
+
+    return FreeCADGui
+
+
+def run(name):
+    """Run a command and let the panel it opens afterwards (a zero-delay timer) appear."""
+    g = gui()
+    g.runCommand(name)
+    for _ in range(3):
+        g.updateGui()
+
+
+def panel_of(obj):
+    return getattr(obj.ViewObject.Proxy, "panel", None)
+
+
+def screenshot(doc, path):
+    from PIL import Image
+
+    g = gui()
+    view = g.getDocument(doc.Name).ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    g.updateGui()
+    if os.path.exists(path):
+        os.remove(path)
+    view.saveImage(path, 800, 600, "White")
+    return np.asarray(Image.open(path).convert("RGB"))
+
+
+def stripe_pixels(image):
+    """(dark, white) pixel counts: the zebra stripes on the white background."""
+    dark = int((image.max(axis=-1) < 60).sum())
+    white = int((image.min(axis=-1) > 215).sum())
+    return dark, white
+
+
+@pytest.fixture
+def scene(doc):
+    """An active document with undo; afterwards no dialog."""
+    g = gui()
+    doc.UndoMode = 1
+    FreeCAD.setActiveDocument(doc.Name)
+    g.ActiveDocument = g.getDocument(doc.Name)
+    g.Selection.clearSelection()
+    yield doc
+    if g.Control.activeDialog():
+        gui_doc = g.getDocument(doc.Name)
+        vp = gui_doc.getInEdit() if gui_doc is not None else None
+        panel = getattr(getattr(vp, "Proxy", None), "panel", None) if vp is not None else None
+        if panel is not None:
+            panel.reject()
+        else:
+            g.Control.closeDialog()
+    g.updateGui()
+
+
+def new_blend(doc):
+    before = {o.Name for o in doc.Objects}
+    assert gui().Command.get(NAME).isActive()
+    run(NAME)
+    created = [o for o in doc.Objects if o.Name not in before]
+    assert len(created) == 1
+    return created[0]
+
+
+def test_command_has_a_toolbar_a_submenu_and_its_own_icons():
+    from PySide2 import QtSvg
+
+    from freecad_workbench.gui import blend_commands, icon_path
+
+    g = gui()
+    g.activateWorkbench("FairSplinesWorkbench")
+    g.updateGui()
+    assert g.activeWorkbench().getToolbarItems()["FairSplines blend"] == [NAME]
+    assert NAME in g.listCommands() and blend_commands.COMMANDS == (NAME,)
+    for icon in (NAME, NAME + "Error"):
+        assert os.path.isfile(icon_path(icon)) and QtSvg.QSvgRenderer(icon_path(icon)).isValid()
+    assert blend_commands.BlendBasicShapeCommand().GetResources()["Pixmap"] == icon_path(NAME)
+
+
+def test_command_creates_a_blend_in_one_undo_step_and_opens_its_panel(scene):
+    from freecad_workbench.gui.blend_commands import BlendShapePanel, ViewProviderBlendShape
+
+    doc = scene
+    blend = new_blend(doc)
+    assert blend.Status == "ok" and blend.Kind == "Sphere zone" and blend.Shape.isValid()
+    vp = blend.ViewObject.Proxy
+    assert isinstance(vp, ViewProviderBlendShape)
+    assert blend.ViewObject.DisplayMode == "Zebra" and vp.zebra.vertex_count > 1000
+    assert isinstance(panel_of(blend), BlendShapePanel) and gui().Control.activeDialog()
+    assert doc.UndoNames[0] == "Create blend basic shape"
+    panel_of(blend).accept()
+    gui().updateGui()
+    assert not gui().Control.activeDialog()
+    name = blend.Name
+    doc.undo()
+    assert doc.getObject(name) is None
+
+
+def test_panel_drives_the_blend_live_and_shows_zebra_seams(scene, artifacts):
+    doc = scene
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    undo_count = len(doc.UndoNames)
+
+    # kind and a dimension, through the widgets
+    panel.kind.setCurrentIndex(3)  # Torus
+    assert blend.Kind == "Torus" and blend.Status == "ok" and blend.MajorRadius == 20
+    panel.widgets["MinorRadius"].setValue(7.0)
+    assert blend.MinorRadius == 7.0 and blend.Status == "ok"
+    # uniform counts
+    panel.widgets["AroundCount"].setValue(8)
+    assert blend.Patches == "basic 24, transition 8, freeform 8"
+    # the lists, typed as comma-separated degrees (spelled out from the counts first)
+    panel.uniform.setChecked(False)
+    assert not blend.Uniform and len(blend.AnglesU) == 9 and "AnglesV" in panel.widgets
+    assert panel.widgets["AnglesU"].text().startswith("0, 45, 90")
+    panel.widgets["AnglesU"].setText("0, 30, 100, 170, 250, 360")
+    panel.widgets["AnglesU"].editingFinished.emit()
+    assert list(blend.AnglesU) == [0, 30, 100, 170, 250, 360] and blend.Status == "ok"
+    panel.method.setCurrentIndex(1)  # sigma
+    assert blend.Method == "sigma" and blend.Status == "ok"
+    gui().updateGui()
+    c2 = screenshot(doc, os.path.join(artifacts, "blend_torus_sigma_zebra.png"))
+    dark, white = stripe_pixels(c2)
+    assert dark > 5000 and white > 5000, (dark, white)  # not blank: stripes on the shell
+    assert blend.ViewObject.Proxy.zebra.vertex_count > 1000
+
+    panel.naive.setChecked(True)
+    assert blend.Naive and blend.Status == "ok"
+    gui().updateGui()
+    naive = screenshot(doc, os.path.join(artifacts, "blend_torus_naive_zebra.png"))
+    assert not np.array_equal(naive, c2)
+
+    # bad input: the message in the panel, the last good shape kept
+    points = [tuple(v.Point) for v in blend.Shape.Vertexes]
+    panel.set_list_text("AnglesU", "0, 100, 90, 360")
+    assert "increase" in blend.Status and "increase" in panel.status_label.text()
+    assert [tuple(v.Point) for v in blend.Shape.Vertexes] == points
+    panel.set_list_text("AnglesU", "0, x, 360")
+    assert "not a number" in panel.status_label.text()
+    panel.set_list_text("AnglesU", "0, 120, 240, 360")
+    assert blend.Status == "ok"
+
+    panel.accept()
+    gui().updateGui()
+    assert not gui().Control.activeDialog()
+    assert len(doc.UndoNames) == undo_count + 1 and doc.UndoNames[0] == "Edit blend basic shape"
+
+
+def test_panel_cancel_restores_the_blend(scene):
+    doc = scene
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    points = [tuple(v.Point) for v in blend.Shape.Vertexes]
+    panel.set_kind("Cone")
+    panel.set_dimension("Slope", -0.2)
+    panel.set_uniform(False)
+    assert blend.Kind == "Cone" and not blend.Uniform
+    panel.reject()
+    gui().updateGui()
+    assert blend.Kind == "Sphere zone" and blend.Uniform and blend.Status == "ok"
+    assert [tuple(v.Point) for v in blend.Shape.Vertexes] == points
+    assert not gui().Control.activeDialog()
+
+
+def test_double_click_opens_the_panel_and_error_shows_the_error_icon(scene):
+    from freecad_workbench.gui import icon_path
+    from freecad_workbench.gui.blend_commands import BlendShapePanel
+
+    doc = scene
+    blend = new_blend(doc)
+    panel_of(blend).accept()
+    gui().updateGui()
+    vp = blend.ViewObject.Proxy
+    assert vp.getIcon() == icon_path(NAME)
+    blend.Radius = 0
+    doc.recompute()
+    assert blend.Status != "ok" and vp.getIcon() == icon_path(NAME + "Error")
+    blend.Radius = 10
+    doc.recompute()
+    assert vp.doubleClicked(blend.ViewObject)
+    gui().updateGui()
+    assert isinstance(panel_of(blend), BlendShapePanel) and gui().Control.activeDialog()
+    panel_of(blend).reject()
+    gui().updateGui()
+
+
+def test_saved_blend_reopens_with_its_zebra_view(scene, tmp_path):
+    from freecad_workbench.gui.blend_commands import ViewProviderBlendShape
+
+    doc = scene
+    blend = new_blend(doc)
+    panel_of(blend).accept()
+    gui().updateGui()
+    path = str(tmp_path / "blend.FCStd")
+    doc.saveAs(path)
+    name = blend.Name
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        gui().updateGui()
+        again = reopened.getObject(name)
+        assert isinstance(again.ViewObject.Proxy, ViewProviderBlendShape)
+        assert again.ViewObject.DisplayMode == "Zebra" and again.Status == "ok"
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
