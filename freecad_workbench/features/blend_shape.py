@@ -164,6 +164,14 @@ def basic_shape(obj):
     around_deg, profile = angle_lists(obj)
     if len(around_deg) < 2 or len(profile) < 2:
         raise InputError("each list needs at least 2 values")
+    # Checked here, in the units the designer typed (the kernel would quote radians).
+    around_name, profile_name = ("AroundCount", "ProfileCount") if obj.Uniform else KIND_LISTS[obj.Kind]
+    unit = "°" if PROFILE_IN_DEGREES[obj.Kind] else ""
+    for name, values, suffix in ((around_name, around_deg, "°"), (profile_name, profile, unit)):
+        for i in range(1, len(values)):
+            if not values[i] > values[i - 1]:
+                raise InputError(f"{name}: value {i} ({values[i]:g}{suffix}) must be greater than "
+                                 f"value {i - 1} ({values[i - 1]:g}{suffix})")
     around = [math.radians(a) for a in around_deg]
     if PROFILE_IN_DEGREES[obj.Kind]:
         profile = [math.radians(a) for a in profile]

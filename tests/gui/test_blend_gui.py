@@ -152,7 +152,8 @@ def test_panel_drives_the_blend_live_and_shows_zebra_seams(scene, artifacts):
     # bad input: the message in the panel, the last good shape kept
     points = [tuple(v.Point) for v in blend.Shape.Vertexes]
     panel.set_list_text("AnglesU", "0, 100, 90, 360")
-    assert "increase" in blend.Status and "increase" in panel.status_label.text()
+    expected = "AnglesU: value 2 (90°) must be greater than value 1 (100°)"  # in the degrees typed
+    assert blend.Status == expected and expected in panel.status_label.text()
     assert [tuple(v.Point) for v in blend.Shape.Vertexes] == points
     panel.set_list_text("AnglesU", "0, x, 360")
     assert "not a number" in panel.status_label.text()
