@@ -7,32 +7,13 @@
 #include <functional>
 
 #include "fairsplines/blend_shapes.hpp"
+#include "blend_test_support.hpp"
 #include "fairsplines/errors.hpp"
 
 using namespace fairsplines;
+using namespace fairsplines::test::blend;
 
 namespace {
-
-const double kPi = std::acos(-1.0);
-
-Eigen::VectorXd vec(std::initializer_list<double> v) {
-  Eigen::VectorXd out(static_cast<Eigen::Index>(v.size()));
-  Eigen::Index i = 0;
-  for (double x : v) out[i++] = x;
-  return out;
-}
-
-/// A full turn, strongly non-uniform.
-Eigen::VectorXd nonUniformTurn() { return vec({0.0, 0.4, 1.5, 2.1, 3.9, 4.3, 5.2, 2 * kPi}); }
-
-ShapeFrame tilted() {
-  ShapeFrame f;
-  f.origin << 1.0, -2.0, 0.5;
-  f.x = Eigen::Vector3d(1, 1, 0).normalized();
-  f.y = Eigen::Vector3d(-1, 1, 1).normalized();
-  f.z = f.x.cross(f.y);
-  return f;
-}
 
 /// Point in the frame's coordinates.
 Eigen::Vector3d local(const ShapeFrame& f, const gp_Pnt& p) {

@@ -95,16 +95,6 @@ class BasicCurvePanel(LiveEditPanel):
 
     # --- widgets ---------------------------------------------------------------------
 
-    def _spin(self, lower, upper, suffix="", decimals=4):
-        from PySide2 import QtWidgets
-
-        spin = QtWidgets.QDoubleSpinBox()
-        spin.setRange(lower, upper)
-        spin.setDecimals(decimals)
-        spin.setSuffix(suffix)
-        spin.setKeyboardTracking(False)
-        return spin
-
     def _build_dimensions(self):
         """Rows for the dimensions of the current kind."""
         from PySide2 import QtWidgets

@@ -212,16 +212,6 @@ class BlendShapePanel(LiveEditPanel):
 
     # --- widgets ---------------------------------------------------------------------
 
-    def _spin(self, lower, upper, suffix="", decimals=4):
-        from PySide2 import QtWidgets
-
-        spin = QtWidgets.QDoubleSpinBox()
-        spin.setRange(lower, upper)
-        spin.setDecimals(decimals)
-        spin.setSuffix(suffix)
-        spin.setKeyboardTracking(False)
-        return spin
-
     def _build_dimensions(self):
         """Rows for the lengths of the kind, then the counts and range (uniform) or the lists."""
         from PySide2 import QtWidgets

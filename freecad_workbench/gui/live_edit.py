@@ -77,6 +77,18 @@ class LiveEditPanel:
     defines finish() (remove what it drew); closing goes through the view provider's
     unsetEdit when the object is in edit mode, which calls finish()."""
 
+    def _spin(self, lower, upper, suffix="", decimals=4):
+        """A spin box for a dimension: range, decimals, unit suffix; it reports a value
+        only when editing ends (no recompute per keystroke)."""
+        from PySide2 import QtWidgets
+
+        spin = QtWidgets.QDoubleSpinBox()
+        spin.setRange(lower, upper)
+        spin.setDecimals(decimals)
+        spin.setSuffix(suffix)
+        spin.setKeyboardTracking(False)
+        return spin
+
     def getStandardButtons(self):
         from PySide2 import QtWidgets
 
