@@ -13,17 +13,14 @@
 #include <cmath>
 #include <sstream>
 
+#include "fairsplines/blend_detail.hpp"
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/errors.hpp"
 
 namespace fairsplines {
 
-namespace {
+namespace detail {
 
-const double kPi = std::acos(-1.0);
-
-/// Tensor form of a surface of revolution (MATH-NOTES): circle rows (x w1, y w1, w1) in u
-/// times profile rows (rho w2, zeta w2, w2) in v: b_ab = (rho_b x_a, rho_b y_a, zeta_b w_a | omega_b w_a).
 Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile) {
   const Eigen::Index ku = circle.rows(), kv = profile.rows();
   Homogeneous4 out(ku * kv, 4);
@@ -37,6 +34,33 @@ Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix
   }
   return out;
 }
+
+Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
+                      int& dv) {
+  Handle(Geom_BSplineSurface) c = Handle(Geom_BSplineSurface)::DownCast(s->Copy());
+  c->Segment(u0, u1, v0, v1);
+  du = c->UDegree();
+  dv = c->VDegree();
+  if (c->NbUPoles() != du + 1 || c->NbVPoles() != dv + 1) throw InputError("the free-form net could not be split into Bézier patches");
+  Homogeneous4 out((du + 1) * (dv + 1), 4);
+  for (int a = 0; a <= du; ++a) {
+    for (int b = 0; b <= dv; ++b) {
+      const gp_Pnt p = c->Pole(a + 1, b + 1);
+      const double w = c->Weight(a + 1, b + 1);
+      out.row(a * (dv + 1) + b) << w * p.X(), w * p.Y(), w * p.Z(), w;
+    }
+  }
+  return out;
+}
+
+}  // namespace detail
+
+using detail::bezierOf;
+using detail::revolveRows;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
 
 /// The profile of a shape of revolution in the (distance from the axis, height) plane, as
 /// G2 cubic pieces (eq. (2) for circles, degree-raised lines) and as C2 sextic pieces
@@ -113,25 +137,6 @@ RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd&
   p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
   p.size = heights[m] - heights[m - 1];
   return p;
-}
-
-/// Homogeneous Bézier patch of the span [u0,u1] x [v0,v1] of an OCCT B-spline surface.
-Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
-                      int& dv) {
-  Handle(Geom_BSplineSurface) c = Handle(Geom_BSplineSurface)::DownCast(s->Copy());
-  c->Segment(u0, u1, v0, v1);
-  du = c->UDegree();
-  dv = c->VDegree();
-  if (c->NbUPoles() != du + 1 || c->NbVPoles() != dv + 1) throw InputError("the free-form net could not be split into Bézier patches");
-  Homogeneous4 out((du + 1) * (dv + 1), 4);
-  for (int a = 0; a <= du; ++a) {
-    for (int b = 0; b <= dv; ++b) {
-      const gp_Pnt p = c->Pole(a + 1, b + 1);
-      const double w = c->Weight(a + 1, b + 1);
-      out.row(a * (dv + 1) + b) << w * p.X(), w * p.Y(), w * p.Z(), w;
-    }
-  }
-  return out;
 }
 
 /// Degree raise in u of a homogeneous patch of degree (du, dv) to degree 6 in u (du = 3).
@@ -509,7 +514,8 @@ TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {
   return out;
 }
 
-Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance) {
+Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance, int smoothness) {
+  if (smoothness < 0) throw InputError("smoothness must be 0 or more");
   const int rows = complex.rowsBasic + 1 + complex.rowsFreeForm, K = complex.piecesU;
   if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1) throw InputError("the complex has no shared knots");
   int d = 0, e = 0;
@@ -546,18 +552,18 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
   knots(complex.knotsU, d, ku, mu);
   knots(complex.knotsV, e, kv, mv);
   Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
-  // C2 where the multiplicities allow it: remove each interior knot down to degree - 2.
+  // C^smoothness where the multiplicities allow it: each interior knot down to degree - smoothness.
   for (int i = 2; i <= K; ++i) {
-    if (!s->RemoveUKnot(i, d - 2, tolerance * size)) {
+    if (!s->RemoveUKnot(i, std::max(d - smoothness, 0), tolerance * size)) {
       std::ostringstream os;
-      os << "the complex is not C2 across u knot " << i - 1;
+      os << "the complex is not C" << smoothness << " across u knot " << i - 1;
       throw InputError(os.str());
     }
   }
   for (int j = 2; j <= rows; ++j) {
-    if (!s->RemoveVKnot(j, e - 2, tolerance * size)) {
+    if (!s->RemoveVKnot(j, std::max(e - smoothness, 0), tolerance * size)) {
       std::ostringstream os;
-      os << "the complex is not C2 across v knot " << j - 1 << " (basic rows only G2? use sexticInV)";
+      os << "the complex is not C" << smoothness << " across v knot " << j - 1 << " (basic rows only G2? use sexticInV)";
       throw InputError(os.str());
     }
   }

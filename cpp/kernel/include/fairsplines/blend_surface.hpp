@@ -96,11 +96,12 @@ TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv);
 
 /// The complex as one Geom_BSplineSurface: every patch raised to the largest degrees
 /// (d, e), assembled over knotsU x knotsV, then every interior knot removed down to
-/// multiplicity d - 2 (e - 2) within `tolerance` (relative to the largest homogeneous
-/// coordinate) so that the multiplicities give C2. Throws InputError where a knot does
-/// not come down (the complex is not C2 there, e.g. basic rows that are only G2). The
+/// multiplicity d - smoothness (e - smoothness) within `tolerance` (relative to the largest
+/// homogeneous coordinate) so that the multiplicities give C^smoothness (2 for the C2
+/// complexes, 1 for the C1 ones of Section 5). Throws InputError where a knot does not
+/// come down (the complex is not that smooth there, e.g. basic rows that are only G2). The
 /// closing u seam is kept as the surface's boundary (not periodic).
-Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance = 1e-9);
+Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance = 1e-9, int smoothness = 2);
 
 /// The naive baseline of Fig. 2a: the G2 bicubic sphere patches as they are, the ring, and a
 /// transition row of degree (3,5) that Hermite-interpolates both 2-jets without

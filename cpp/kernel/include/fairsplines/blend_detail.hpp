@@ -1,0 +1,22 @@
+// Internal helpers of the blend complexes (Section 4.2 and Section 5 of Karčiauskas &
+// Peters), shared by the C2 (blend_surface.cpp) and C1 (G1 to C1) constructions.
+#pragma once
+#include <Geom_BSplineSurface.hxx>
+
+#include "fairsplines/blend_shapes.hpp"
+#include "fairsplines/types.hpp"
+
+namespace fairsplines::detail {
+
+/// Tensor form of a surface of revolution (MATH-NOTES): circle rows (x w1, y w1, w1) in u
+/// times profile rows (rho w2, zeta w2, w2) in v: b_ab = (rho_b x_a, rho_b y_a, zeta_b w_a | omega_b w_a)
+/// in the frame; row a * profile.rows() + b. Any numbers of rows (any degrees).
+Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile);
+
+/// Homogeneous Bézier patch of the span [u0,u1] x [v0,v1] of an OCCT B-spline surface, row
+/// a (dv + 1) + b; du, dv receive its degrees. Throws InputError if the span is not one
+/// Bézier patch (knots inside it).
+Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
+                      int& dv);
+
+}  // namespace fairsplines::detail
