@@ -155,6 +155,7 @@ void bindBlend(py::module_& m) {
       .def_readonly("pieces_u", &BlendComplex::piecesU)
       .def_readonly("rows_basic", &BlendComplex::rowsBasic)
       .def_readonly("rows_freeform", &BlendComplex::rowsFreeForm)
+      .def_readonly("smoothness", &BlendComplex::smoothness)
       .def(
           "patches",
           [](const BlendComplex& c) {
@@ -169,12 +170,13 @@ void bindBlend(py::module_& m) {
           "single_surface",
           [](const BlendComplex& c, double tolerance) -> std::optional<BSplineSurface> {
             try {
-              return fromOcctSurface(singleSurface(c, tolerance));
+              return fromOcctSurface(singleSurface(c, tolerance, c.smoothness));
             } catch (const InputError&) {
-              return std::nullopt;  // not a C2 tensor grid (e.g. the naive baseline)
+              return std::nullopt;  // not a C2 (C1) tensor grid (e.g. the naive baseline)
             }
           },
-          "tolerance"_a = 1e-9, "One C2 Geom_BSplineSurface of the complex, or None where it is not C2.")
+          "tolerance"_a = 1e-9,
+          "One Geom_BSplineSurface of the complex, C2 (C1 for the Section 5 complexes), or None where it is not.")
       .def(
           "shell_address",
           [](const BlendComplex& c) {

@@ -37,6 +37,7 @@ struct BlendComplex {
   int piecesU = 0, rowsBasic = 0, rowsFreeForm = 0;
   bool closedU = true;
   bool basicC2InV = false;  ///< basic rows converted to C2 sextics across the interface too
+  int smoothness = 2;       ///< the continuity the complex is built for: 2 (Section 4.2) or 1 (Section 5)
 };
 
 /// Exact rational Bézier Geom_BSplineSurface of a patch over [0,1]^2. Throws InputError for
