@@ -249,3 +249,185 @@ TEST(TorusBlend, TorusZoneComplexIsC2AndStaysExact) {
   // A closed tube has no boundary to join.
   EXPECT_THROW(blendTorus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})), InputError);
 }
+
+// ---- Basic shape to basic shape (Figs. 9, 11, 12) and the interface at a profile's start ----
+
+namespace {
+
+/// The worst distance function over the basic patches of the first shape (rows before the
+/// strip) or of the second (rows after it).
+template <class F>
+double offSide(const BlendComplex& c, bool second, F distance) {
+  double worst = 0.0;
+  int seen = 0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::Basic || (p.vPiece > c.rowsBasic) != second) continue;
+    ++seen;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 12; ++a) {
+      for (int b = 0; b <= 12; ++b) worst = std::max(worst, std::abs(distance(s->Value(a / 12.0, b / 12.0))));
+    }
+  }
+  EXPECT_GT(seen, 0);
+  return worst;
+}
+
+ShapeOfRevolution coneShape(const ShapeFrame& f, double radius0, double slope, const Eigen::VectorXd& around,
+                            const Eigen::VectorXd& heights) {
+  ShapeOfRevolution s;
+  s.kind = ShapeOfRevolution::Kind::Cone;
+  s.frame = f;
+  s.size0 = radius0;
+  s.size1 = slope;
+  s.around = around;
+  s.profile = heights;
+  return s;
+}
+
+double offCone(const ShapeFrame& f, double radius0, double slope, const gp_Pnt& q) {
+  const auto l = localOf(f, q);
+  return (std::hypot(l.x(), l.y()) - (radius0 + slope * l.z())) / std::sqrt(1 + slope * slope);
+}
+
+/// A second strongly non-uniform turn with as many arcs as nonUniformTurn().
+Eigen::VectorXd otherTurn() { return vec({0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * kPi}); }
+
+}  // namespace
+
+TEST(JoinShapes, TwoDifferentlyPartitionedConesJoinC2AndStayExact) {
+  // Fig. 11: two cones, partitioned differently around the axis (beta^top != beta^bottom).
+  const ShapeFrame f = tilted();
+  const ShapeOfRevolution lower = coneShape(f, 2.0, 0.3, nonUniformTurn(), vec({-2.0, -1.2, 0.0}));
+  const ShapeOfRevolution upper = coneShape(f, 2.8, -0.4, otherTurn(), vec({1.0, 1.5, 2.6}));
+  for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma, CircleReparam::Mixed}) {
+    const BlendComplex c = joinShapes(lower, upper, method);
+    EXPECT_LT(offSide(c, false, [&](const gp_Pnt& q) { return offCone(f, 2.0, 0.3, q); }), 1e-10 * 4);
+    EXPECT_LT(offSide(c, true, [&](const gp_Pnt& q) { return offCone(f, 2.8, -0.4, q); }), 1e-10 * 4);
+    const SeamReport r = seams(c);
+    EXPECT_LT(r.worst, 1e-8) << static_cast<int>(method);
+    EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  }
+  // Mixed with a uniform run on one side only: rho (three pieces an arc) there, sigma (one)
+  // on the other side, so those arcs are cut into thirds on the other side.
+  const ShapeOfRevolution runs = coneShape(f, 2.0, 0.3, vec({0.0, 0.5, 1.0, 1.5, 2.9, 3.5, 4.6, 2 * kPi}),
+                                           vec({-2.0, -1.2, 0.0}));
+  const BlendComplex mixed = joinShapes(runs, upper, CircleReparam::Mixed);
+  EXPECT_GT(mixed.piecesU, 7);
+  EXPECT_LT(mixed.piecesU, 21);
+  EXPECT_LT(seams(mixed).worst, 1e-8);
+  EXPECT_LT(offSide(mixed, true, [&](const gp_Pnt& q) { return offCone(f, 2.8, -0.4, q); }), 1e-10 * 4);
+  // Fig. 2a between the two G2 complexes: the strip is not C2 along u.
+  const BlendComplex naive = joinShapes(lower, upper, CircleReparam::Rho, false, true);
+  EXPECT_GT(seams(naive).alongU[naive.rowsBasic], 1e-3);
+  EXPECT_THROW(singleSurface(naive), InputError);
+}
+
+TEST(JoinShapes, ToriWithDifferentCrossSectionalPartitionsJoinWithoutKnotInsertion) {
+  // Fig. 12: two tori (the same here), tube partitions differ on the two sides of the strip.
+  const ShapeFrame f = tilted();
+  ShapeOfRevolution a;
+  a.kind = ShapeOfRevolution::Kind::Torus;
+  a.frame = f;
+  a.size0 = 3.0;
+  a.size1 = 1.0;
+  a.around = nonUniformTurn();
+  a.profile = vec({-1.4, -1.1, -0.3});
+  ShapeOfRevolution b = a;
+  b.around = otherTurn();
+  b.profile = vec({0.2, 0.5, 1.3, 1.6});
+  const BlendComplex c = joinShapes(a, b);
+  auto offTorus = [&](const gp_Pnt& q) {
+    const auto l = localOf(f, q);
+    return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
+  };
+  EXPECT_LT(offSide(c, false, offTorus), 1e-10 * 4);
+  EXPECT_LT(offSide(c, true, offTorus), 1e-10 * 4);
+  EXPECT_LT(seams(c).worst, 1e-8);
+  EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+}
+
+TEST(JoinShapes, CylinderIntoASphericalDome) {
+  // Figs. 9-10: a dome with spherical top (its pole included) on a circular cylinder.
+  const ShapeFrame f = tilted();
+  ShapeFrame domeFrame = f;
+  domeFrame.origin = f.origin + 2.5 * f.z;
+  const ShapeOfRevolution cylinderShape = coneShape(f, 1.0, 0.0, nonUniformTurn(), vec({0.0, 1.0, 1.8}));
+  ShapeOfRevolution dome;
+  dome.frame = domeFrame;
+  dome.size0 = 1.0;
+  dome.around = nonUniformTurn();
+  dome.profile = vec({0.2, 0.9, kPi / 2});
+  const BlendComplex c = joinShapes(cylinderShape, dome);
+  EXPECT_LT(offSide(c, false, [&](const gp_Pnt& q) { return offCone(f, 1.0, 0.0, q); }), 1e-10);
+  EXPECT_LT(offSide(c, true,
+                    [&](const gp_Pnt& q) {
+                      return (Eigen::Vector3d(q.X(), q.Y(), q.Z()) - domeFrame.origin).norm() - 1.0;
+                    }),
+            1e-10);
+  EXPECT_LT(seams(c).worst, 1e-8);
+  EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  // The dome cannot be the first shape: its end is the pole.
+  EXPECT_THROW(joinShapes(dome, cylinderShape), InputError);
+}
+
+TEST(JoinShapes, BadInputRaisesInputError) {
+  const ShapeFrame f = tilted();
+  const ShapeOfRevolution a = coneShape(f, 2.0, 0.0, nonUniformTurn(), vec({0.0, 1.0}));
+  try {
+    joinShapes(a, coneShape(f, 2.0, 0.0, uniformTurn(5), vec({2.0, 3.0})));
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("same number of arcs"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(joinShapes(a, coneShape(f, 2.0, 0.0, vec({0.0, 1.0, 2.0}), vec({2.0, 3.0}))), InputError);  // not a turn
+  EXPECT_THROW(joinShapes(a, coneShape(f, 2.0, 0.0, nonUniformTurn(), vec({3.0, 2.0}))), InputError);  // heights
+}
+
+TEST(RefineArcs, CuttingArcsIntoThirdsKeepsTheCurveAndItsC2Knots) {
+  const C2SexticSpline c2 = circleToC2(g2Circle(nonUniformTurn()), CircleReparam::Sigma);
+  std::vector<int> parts(c2.firstPiece.size() - 1, 1);
+  parts[2] = 3;
+  parts[5] = 3;
+  const C2SexticSpline fine = refineArcs(c2, parts);
+  EXPECT_EQ(fine.pieces(), c2.pieces() + 4);
+  const Eigen::VectorXd t = c2.knots(), s = fine.knots();
+  // Every point of the coarse spline at its own parameter equals the fine one's at the same
+  // global parameter (knots scaled to the same first arc).
+  auto eval = [](const C2SexticSpline& c, const Eigen::VectorXd& knots, double x) {
+    int k = 0;
+    while (k + 1 < c.pieces() && x > knots[k + 1]) ++k;
+    PointMatrix left, right, b = c.bezier.middleRows(7 * k, 7);
+    const double u = (x - knots[k]) / (knots[k + 1] - knots[k]);
+    Eigen::RowVectorXd p = Eigen::RowVectorXd::Zero(b.cols());
+    for (int i = 0; i <= 6; ++i) {
+      const double binom[7] = {1, 6, 15, 20, 15, 6, 1};
+      p += binom[i] * std::pow(u, i) * std::pow(1 - u, 6 - i) * b.row(i);
+    }
+    return Eigen::Vector2d(p[0] / p[2], p[1] / p[2]);
+  };
+  const double scale = t[t.size() - 1] / s[s.size() - 1];
+  for (int k = 0; k <= 200; ++k) {
+    const double x = t[t.size() - 1] * k / 200.0;
+    EXPECT_LT((eval(c2, t, x) - eval(fine, s, x / scale)).norm(), 1e-13);
+  }
+  EXPECT_NEAR(fine.beta[3], 1.0, 1e-15);  // inside a split arc
+  EXPECT_THROW(refineArcs(c2, std::vector<int>(parts.size(), 0)), InputError);
+}
+
+TEST(SphereBlend, DomeJoinsItsRingAtTheBottom) {
+  // The interface at the start of the profile: a dome (pole at the top) with a ring below.
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd lat = vec({0.3, 0.8, kPi / 2});
+  EXPECT_THROW(blendSphereZone(f, 1.0, nonUniformTurn(), lat), InputError);  // its end is the pole
+  const BlendComplex c =
+      blendSphereZone(f, 1.0, nonUniformTurn(), lat, CircleReparam::Rho, nullptr, true, Interface::Start);
+  EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
+  EXPECT_LT(seams(c).worst, 1e-8);
+  EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  // The ring lies below the dome's lowest latitude.
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::FreeForm) continue;
+    EXPECT_LT(localOf(f, patchToOcct(p)->Value(0.5, 0.5)).z(), std::sin(0.3));
+  }
+}

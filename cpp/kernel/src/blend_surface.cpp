@@ -10,8 +10,10 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "fairsplines/blend_detail.hpp"
 #include "fairsplines/bspline.hpp"
@@ -71,7 +73,27 @@ struct RevolvedProfile {
   Eigen::VectorXd sexticKnots;       ///< pieces + 1 knots of the sextic pieces
   Eigen::Vector2d end, tangent;      ///< (rho, zeta) at the interface and the unit direction leaving it
   double size = 1.0;                 ///< length scale of the last piece (for the default ring)
+  Eigen::Vector2d start, startTangent;  ///< the same at the profile's start (direction leaving it backwards)
+  double startSize = 1.0;
 };
+
+/// The profile run backwards, so that its start becomes the interface at its end. Pieces and
+/// their Bézier rows in reverse order; the knots mirrored.
+RevolvedProfile reversedProfile(const RevolvedProfile& p) {
+  RevolvedProfile r;
+  for (auto it = p.cubic.rbegin(); it != p.cubic.rend(); ++it) r.cubic.push_back(it->colwise().reverse());
+  for (auto it = p.sextic.rbegin(); it != p.sextic.rend(); ++it) r.sextic.push_back(it->colwise().reverse());
+  const Eigen::Index m = p.sexticKnots.size() - 1;
+  r.sexticKnots.resize(m + 1);
+  for (Eigen::Index j = 0; j <= m; ++j) r.sexticKnots[j] = p.sexticKnots[m] - p.sexticKnots[m - j];
+  r.end = p.start;
+  r.tangent = p.startTangent;
+  r.size = p.startSize;
+  r.start = p.end;
+  r.startTangent = p.tangent;
+  r.startSize = p.size;
+  return r;
+}
 
 /// A circle profile: centre (rhoOffset, 0), radius r, partition `angles` (the circle's
 /// pieces (x, y, w) map to (rhoOffset w + r x, r y, w)).
@@ -100,6 +122,10 @@ RevolvedProfile circleProfile(double rhoOffset, double r, const Eigen::VectorXd&
   p.end << rhoOffset + r * std::cos(phi), r * std::sin(phi);
   p.tangent << -std::sin(phi), std::cos(phi);
   p.size = r * c.alpha[c.pieces() - 1];
+  const double phi0 = c.theta[0];
+  p.start << rhoOffset + r * std::cos(phi0), r * std::sin(phi0);
+  p.startTangent << std::sin(phi0), -std::cos(phi0);
+  p.startSize = r * c.alpha[0];
   return p;
 }
 
@@ -136,6 +162,9 @@ RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd&
   p.end << radius0 + slope * heights[m], heights[m];
   p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
   p.size = heights[m] - heights[m - 1];
+  p.start << radius0 + slope * heights[0], heights[0];
+  p.startTangent = -p.tangent;
+  p.startSize = heights[1] - heights[0];
   return p;
 }
 
@@ -295,11 +324,23 @@ Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleS
 }
 
 /// Section 4.2 for a shape of revolution with its interface at the profile's end.
+/// Throws InputError where the profile's end (the interface) lies on the axis.
+void checkInterfaceOffAxis(const RevolvedProfile& profile, const char* which) {
+  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
+    throw InputError(std::string("the interface at the ") + which +
+                     " of the profile lies on the axis (a pole): there is nothing to join there; join at the other end");
+  }
+}
+
+/// The profile with the interface at its end: as it is (Interface::End) or reversed.
+RevolvedProfile atInterface(const RevolvedProfile& p, Interface at) {
+  RevolvedProfile out = at == Interface::End ? p : reversedProfile(p);
+  checkInterfaceOffAxis(out, at == Interface::End ? "end" : "start");
+  return out;
+}
+
 BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
                            CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {
-  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
-    throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
-  }
   // Step 1: along the interface the G2 circle becomes the C2 sextic of 4.1 (betaT = beta,
   // the heuristic of Section 3); the basic shape stays exact.
   const C2SexticSpline c2 = circleToC2(lon, method);
@@ -371,9 +412,6 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
 /// The naive baseline of Fig. 2a for a shape of revolution.
 BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
                                 Handle(Geom_BSplineSurface) ring) {
-  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
-    throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
-  }
   // The same arc knots as the blend (sigma: one piece per arc).
   const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
   if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
@@ -423,9 +461,6 @@ RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, C
   for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
     if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) throw InputError("latitudes must lie in [-pi/2, pi/2]");
   }
-  if (latitudes.size() < 2 || !(latitudes[latitudes.size() - 1] < kPi / 2 - 1e-9)) {
-    throw InputError("the top latitude of a sphere zone to blend must lie below pi/2 (the ring joins there)");
-  }
   return circleProfile(0.0, radius, latitudes, method);
 }
 
@@ -438,38 +473,251 @@ RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV,
 
 Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                                               const Eigen::VectorXd& latitudes, const Eigen::VectorXd& knotsU) {
-  return defaultRing(frame, checkedLongitudes(frame, longitudes), sphereProfile(radius, latitudes, CircleReparam::Rho),
-                     knotsU);
+  return defaultRing(frame, checkedLongitudes(frame, longitudes),
+                     atInterface(sphereProfile(radius, latitudes, CircleReparam::Rho), Interface::End), knotsU);
 }
 
 BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                              const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring,
-                             bool sexticInV) {
-  return blendRevolved(frame, checkedLongitudes(frame, longitudes), sphereProfile(radius, latitudes, method), method,
-                       ring, sexticInV);
+                             bool sexticInV, Interface at) {
+  const G2CircleSpline lon = checkedLongitudes(frame, longitudes);
+  return blendRevolved(frame, lon, atInterface(sphereProfile(radius, latitudes, method), at), method, ring, sexticInV);
 }
 
 BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring) {
-  return blendRevolvedNaive(frame, checkedLongitudes(frame, longitudes),
-                            sphereProfile(radius, latitudes, CircleReparam::Rho), ring);
+                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring, Interface at) {
+  const G2CircleSpline lon = checkedLongitudes(frame, longitudes);
+  return blendRevolvedNaive(frame, lon, atInterface(sphereProfile(radius, latitudes, CircleReparam::Rho), at), ring);
 }
 
 BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
                        const Eigen::VectorXd& heights, CircleReparam method, Handle(Geom_BSplineSurface) ring,
-                       bool sexticInV, bool naive) {
+                       bool sexticInV, bool naive, Interface at) {
   if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
   const G2CircleSpline lon = checkedLongitudes(frame, angles);
-  const RevolvedProfile p = lineProfile(radius0, slope, heights);
+  const RevolvedProfile p = atInterface(lineProfile(radius0, slope, heights), at);
   return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
 }
 
 BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                         const Eigen::VectorXd& anglesV, CircleReparam method, Handle(Geom_BSplineSurface) ring,
-                        bool sexticInV, bool naive) {
+                        bool sexticInV, bool naive, Interface at) {
   const G2CircleSpline lon = checkedLongitudes(frame, anglesU);
-  const RevolvedProfile p = torusProfile(R, r, anglesV, method);
+  const RevolvedProfile p = atInterface(torusProfile(R, r, anglesV, method), at);
   return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
+}
+
+namespace {
+
+/// de Casteljau: the Bézier rows b split at t into the pieces over [0, t] and [t, 1].
+void splitBezier(const PointMatrix& b, double t, PointMatrix& left, PointMatrix& right) {
+  const Eigen::Index n = b.rows() - 1;
+  PointMatrix work = b;
+  left.resize(n + 1, b.cols());
+  right.resize(n + 1, b.cols());
+  left.row(0) = work.row(0);
+  right.row(n) = work.row(n);
+  for (Eigen::Index r = 1; r <= n; ++r) {
+    for (Eigen::Index i = 0; i <= n - r; ++i) work.row(i) = (1 - t) * work.row(i) + t * work.row(i + 1);
+    left.row(r) = work.row(0);
+    right.row(n - r) = work.row(n - r);
+  }
+}
+
+/// One side of a shape-to-shape join: the circle around the axis and the profile.
+struct JoinSide {
+  ShapeFrame frame;
+  G2CircleSpline lon;
+  RevolvedProfile profile;  ///< in its own direction (v increasing)
+};
+
+JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method, Interface at, const char* name) {
+  JoinSide side;
+  side.frame = shape.frame;
+  side.lon = checkedLongitudes(shape.frame, shape.around);
+  switch (shape.kind) {
+    case ShapeOfRevolution::Kind::SphereZone:
+      side.profile = sphereProfile(shape.size0, shape.profile, method);
+      break;
+    case ShapeOfRevolution::Kind::Cone:
+      if (!std::isfinite(shape.size0) || !std::isfinite(shape.size1)) throw InputError("a cone needs a finite radius and slope");
+      side.profile = lineProfile(shape.size0, shape.size1, shape.profile);
+      break;
+    case ShapeOfRevolution::Kind::Torus:
+      side.profile = torusProfile(shape.size0, shape.size1, shape.profile, method);
+      break;
+  }
+  const RevolvedProfile interface = at == Interface::End ? side.profile : reversedProfile(side.profile);
+  if (!(interface.end.x() > 1e-9 * (std::abs(interface.end.y()) + interface.size))) {
+    throw InputError(std::string("the ") + name + " shape's profile meets the axis (a pole) at the join");
+  }
+  return side;
+}
+
+/// The Fig. 2a baseline between two G2 complexes: cubic circle pieces as they are, a (3,5)
+/// Hermite strip without reparameterization.
+BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
+  BlendComplex out;
+  out.knotsU = arcKnots(circleToC2(a.lon, CircleReparam::Sigma));
+  out.piecesU = a.lon.pieces();
+  out.rowsBasic = static_cast<int>(a.profile.cubic.size());
+  out.rowsFreeForm = static_cast<int>(b.profile.cubic.size());
+  out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
+  for (int k = 0; k < out.piecesU; ++k) {
+    Homogeneous4 top, bottom;
+    for (int j = 0; j < out.rowsBasic; ++j) {
+      TaggedPatch p;
+      p.uPiece = k;
+      p.vPiece = j;
+      p.bezier = revolveRows(a.frame, a.lon.cubic.middleRows(4 * k, 4), a.profile.cubic[j]);
+      if (j + 1 == out.rowsBasic) top = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    for (int j = 0; j < out.rowsFreeForm; ++j) {
+      TaggedPatch p;
+      p.uPiece = k;
+      p.vPiece = out.rowsBasic + 1 + j;
+      p.bezier = revolveRows(b.frame, b.lon.cubic.middleRows(4 * k, 4), b.profile.cubic[j]);
+      if (j == 0) bottom = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    TaggedPatch strip;
+    strip.role = TaggedPatch::Role::Transition;
+    strip.degreeU = 3;
+    strip.degreeV = 5;
+    strip.uPiece = k;
+    strip.vPiece = out.rowsBasic;
+    strip.bezier = hermiteStrip(top, 3, bottom, 3, 4);
+    out.patches.push_back(std::move(strip));
+  }
+  return out;
+}
+
+}  // namespace
+
+C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& parts) {
+  const int n = static_cast<int>(c2.firstPiece.size()) - 1;
+  if (static_cast<int>(parts.size()) != n) throw InputError("refineArcs needs one piece count per arc");
+  const Eigen::VectorXd t = c2.knots();
+  std::vector<PointMatrix> pieces;
+  std::vector<double> lengths;
+  C2SexticSpline out;
+  out.closed = c2.closed;
+  out.firstPiece.push_back(0);
+  int firstSplit = 1, lastSplit = 1;
+  for (int i = 0; i < n; ++i) {
+    const int have = c2.firstPiece[i + 1] - c2.firstPiece[i];
+    if (parts[i] < have || parts[i] % have != 0) {
+      std::ostringstream os;
+      os << "arc " << i << " has " << have << " pieces; it cannot be split into " << parts[i];
+      throw InputError(os.str());
+    }
+    const int m = parts[i] / have;  // every piece of the arc into m equal parts
+    if (i == 0) firstSplit = m;
+    if (i + 1 == n) lastSplit = m;
+    for (int k = c2.firstPiece[i]; k < c2.firstPiece[i + 1]; ++k) {
+      PointMatrix rest = c2.bezier.middleRows(7 * k, 7);
+      const double h = (t[k + 1] - t[k]) / m;
+      for (int j = m; j > 1; --j) {  // cut off 1/j of what is left
+        PointMatrix left, right;
+        splitBezier(rest, 1.0 / j, left, right);
+        pieces.push_back(left);
+        lengths.push_back(h);
+        rest = right;
+      }
+      pieces.push_back(rest);
+      lengths.push_back(h);
+    }
+    out.firstPiece.push_back(static_cast<int>(pieces.size()));
+  }
+  const int P = static_cast<int>(pieces.size());
+  out.bezier.resize(7 * P, c2.bezier.cols());
+  out.beta.resize(P);
+  for (int k = 0; k < P; ++k) {
+    out.bezier.middleRows(7 * k, 7) = pieces[k];
+    out.beta[k] = k > 0 ? lengths[k] / lengths[k - 1] : 1.0;
+  }
+  // The closing join keeps its scalar, rescaled by the new lengths of the last and first pieces.
+  out.beta[0] = c2.closed ? c2.beta[0] * lastSplit / firstSplit : c2.beta[0];
+  return out;
+}
+
+BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution& shapeB, CircleReparam method,
+                        bool sexticInV, bool naive) {
+  const JoinSide a = joinSide(shapeA, method, Interface::End, "first");
+  const JoinSide b = joinSide(shapeB, method, Interface::Start, "second");
+  const int n = a.lon.pieces();
+  if (b.lon.pieces() != n) {
+    std::ostringstream os;
+    os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.lon.pieces() << ")";
+    throw InputError(os.str());
+  }
+  if (naive) return joinNaive(a, b);
+  // Fig. 11: across the transition the scalars are averaged, betaT_i = sqrt(beta_i^top beta_i^bottom).
+  const Eigen::VectorXd betaT = (a.lon.beta.array() * b.lon.beta.array()).sqrt().matrix();
+  C2SexticSpline ca = circleToC2(a.lon, method, betaT), cb = circleToC2(b.lon, method, betaT);
+  // Fig. 12: both sides as C2 sextics with the same pieces, so no knot insertion: an arc with
+  // one piece on one side and three on the other is cut into thirds.
+  std::vector<int> parts(n);
+  for (int i = 0; i < n; ++i) {
+    parts[i] = std::max(ca.firstPiece[i + 1] - ca.firstPiece[i], cb.firstPiece[i + 1] - cb.firstPiece[i]);
+  }
+  ca = refineArcs(ca, parts);
+  cb = refineArcs(cb, parts);
+  const Eigen::VectorXd tA = ca.knots(), tB = cb.knots();
+  if (!((tA - tB).cwiseAbs().maxCoeff() <= 1e-9 * tA[tA.size() - 1])) {
+    throw std::logic_error("joinShapes: the two sides' u knots differ after refinement");
+  }
+  BlendComplex out;
+  out.knotsU = tA / tA[ca.firstPiece[1]];  // the first arc has length 1, as arcKnots
+  out.piecesU = ca.pieces();
+  out.basicC2InV = sexticInV;
+  const std::vector<Homogeneous3>& rowsA = sexticInV ? a.profile.sextic : a.profile.cubic;
+  const std::vector<Homogeneous3>& rowsB = sexticInV ? b.profile.sextic : b.profile.cubic;
+  const int dv = sexticInV ? 6 : 3;
+  out.rowsBasic = static_cast<int>(rowsA.size());
+  out.rowsFreeForm = static_cast<int>(rowsB.size());
+  const Eigen::VectorXd knotsA =
+      sexticInV ? a.profile.sexticKnots : Eigen::VectorXd::LinSpaced(out.rowsBasic + 1, 0.0, out.rowsBasic);
+  const Eigen::VectorXd knotsB =
+      sexticInV ? b.profile.sexticKnots : Eigen::VectorXd::LinSpaced(out.rowsFreeForm + 1, 0.0, out.rowsFreeForm);
+  // Scalar 1 across both seams of the strip: strip and b's first row as long as a's last row.
+  const double stripLength = knotsA[out.rowsBasic] - knotsA[out.rowsBasic - 1];
+  out.knotsV.resize(out.rowsBasic + out.rowsFreeForm + 2);
+  out.knotsV.head(out.rowsBasic + 1) = knotsA;
+  out.knotsV[out.rowsBasic + 1] = knotsA[out.rowsBasic] + stripLength;
+  const double scaleB = stripLength / (knotsB[1] - knotsB[0]);
+  for (int j = 1; j <= out.rowsFreeForm; ++j) {
+    out.knotsV[out.rowsBasic + 1 + j] = out.knotsV[out.rowsBasic + 1] + scaleB * (knotsB[j] - knotsB[0]);
+  }
+  for (int k = 0; k < out.piecesU; ++k) {
+    Homogeneous4 top, bottom;
+    for (int side = 0; side < 2; ++side) {
+      const std::vector<Homogeneous3>& rows = side == 0 ? rowsA : rowsB;
+      const PointMatrix circle = (side == 0 ? ca : cb).bezier.middleRows(7 * k, 7);
+      for (int j = 0; j < static_cast<int>(rows.size()); ++j) {
+        TaggedPatch p;
+        p.degreeU = 6;
+        p.degreeV = dv;
+        p.uPiece = k;
+        p.vPiece = side == 0 ? j : out.rowsBasic + 1 + j;
+        p.bezier = revolveRows(side == 0 ? a.frame : b.frame, circle, rows[j]);
+        if (side == 0 && j + 1 == out.rowsBasic) top = p.bezier;
+        if (side == 1 && j == 0) bottom = p.bezier;
+        out.patches.push_back(std::move(p));
+      }
+    }
+    // Section 4.2, steps 2-3: three layers from each side, degree-raised to (6,5).
+    TaggedPatch strip;
+    strip.role = TaggedPatch::Role::Transition;
+    strip.degreeU = 6;
+    strip.degreeV = 5;
+    strip.uPiece = k;
+    strip.vPiece = out.rowsBasic;
+    strip.bezier = hermiteStrip(top, dv, bottom, dv, 7);
+    out.patches.push_back(std::move(strip));
+  }
+  return out;
 }
 
 Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam method) {

@@ -40,6 +40,11 @@ struct BlendComplex {
   int smoothness = 2;       ///< the continuity the complex is built for: 2 (Section 4.2) or 1 (Section 5)
 };
 
+/// Where a shape of revolution meets the free-form side: the end of its profile (top
+/// latitude, top height, last tube angle) or its start (bottom), e.g. for a dome whose top
+/// is a pole. At the start the profile is run backwards (v reversed).
+enum class Interface { End, Start };
+
 /// Exact rational Bézier Geom_BSplineSurface of a patch over [0,1]^2. Throws InputError for
 /// a non-positive weight.
 Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch);
@@ -72,7 +77,8 @@ Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
 /// basic patches of degree (6,6), the whole complex C2 and a tensor grid (singleSurface).
 BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                              const Eigen::VectorXd& latitudes, CircleReparam method = CircleReparam::Rho,
-                             Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false);
+                             Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false,
+                             Interface at = Interface::End);
 
 /// Section 4.2 for a cone (a cylinder with slope 0): radius radius0 + slope z, angles over a
 /// full turn, increasing heights; the interface is the top height. naive: the Fig. 2a
@@ -80,14 +86,16 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
 /// default ring continues along the cone's generator.
 BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
                        const Eigen::VectorXd& heights, CircleReparam method = CircleReparam::Rho,
-                       Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false);
+                       Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false,
+                       Interface at = Interface::End);
 
 /// Section 4.2 for a torus zone: anglesU over a full turn, anglesV an open range around the
 /// tube (0 = outer equator); the interface is the last v angle. Throws InputError for a
 /// closed tube range (no boundary to join).
 BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                         const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho,
-                        Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false);
+                        Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false,
+                       Interface at = Interface::End);
 
 /// The u knots (one period) a free-form ring must have: arcKnots of the C2 circle.
 Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam method = CircleReparam::Rho);
@@ -108,7 +116,41 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
 /// transition row of degree (3,5) that Hermite-interpolates both 2-jets without
 /// reparameterization (u-intervals: the arcs). Same ring rules as blendSphereZone.
 BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
-                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring = nullptr);
+                                  const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring = nullptr,
+                                  Interface at = Interface::End);
+
+/// A basic shape of revolution, described for the shape-to-shape join: kind, frame (z the
+/// axis), its two size parameters and its angle lists (radians; heights for cylinder/cone).
+struct ShapeOfRevolution {
+  enum class Kind { SphereZone, Cone, Torus };  ///< a cylinder is a cone with slope 0
+  Kind kind = Kind::SphereZone;
+  ShapeFrame frame;
+  double size0 = 1.0;  ///< sphere: radius; cone: radius0 (at height 0); torus: major radius R
+  double size1 = 0.0;  ///< sphere: unused; cone: slope; torus: minor radius r
+  Eigen::VectorXd around;   ///< angles around the axis (a full turn)
+  Eigen::VectorXd profile;  ///< latitudes, heights or tube angles
+};
+
+/// Basic shape to basic shape (Figs. 9, 11, 12): the end of a's profile joined to the start
+/// of b's by one (6,5) transition row, both kept exact. Both angle lists around the axes need
+/// the same number of arcs; across the transition the scalars are averaged,
+/// betaT_i = sqrt(beta_i^a beta_i^b) (Fig. 11), both circles converted to C2 sextics with
+/// these betaT (Section 4.1; arcs where one side has one piece and the other three are split
+/// into thirds, exactly), so the two sides share their u knots without knot insertion
+/// (Fig. 12). sexticInV: both profiles converted too (C2 everywhere, singleSurface works).
+/// The strip joins both sides with scalar 1: the second shape's first v interval is made as
+/// long as the first shape's last. The patches of b are tagged Basic too; they are the rows
+/// after the strip (rowsFreeForm counts them). naive: the Fig. 2a baseline between the two
+/// G2 complexes (cubic in u, a (3,5) strip, no reparameterization). Throws InputError for
+/// different arc counts, partial turns, an interface on the axis or the other checks of the
+/// shapes.
+BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b, CircleReparam method = CircleReparam::Rho,
+                        bool sexticInV = true, bool naive = false);
+
+/// Splits arc i of a C2 sextic spline into parts[i] equal pieces (a multiple of the pieces it
+/// has) by de Casteljau: the curve and its C2 joins are unchanged; the scalars follow the new
+/// interval lengths. Throws InputError for a count that is not a multiple.
+C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& parts);
 
 /// Every patch as a face, sewn into one shell (BRepBuilderAPI_Sewing, tolerance relative
 /// to the complex's size). Throws InputError if sewing does not give a single shell.
