@@ -22,7 +22,14 @@ from .curves import (  # noqa: E402
 from . import basic  # noqa: E402
 from .design import ApproximationError, DesignResult, approximation_error, design_spline, revolve_profile  # noqa: E402
 from . import shapes  # noqa: E402
-from .blend import BlendResult, blend_basic_shape, blend_naive, freeform_knots  # noqa: E402
+from .blend import (  # noqa: E402
+    BlendResult,
+    blend_basic_shape,
+    blend_naive,
+    freeform_knots,
+    join_basic_shapes,
+    join_naive,
+)
 from .analysis import (  # noqa: E402
     CurvatureProfile,
     curvature_profile,
@@ -63,6 +70,8 @@ __all__ = [
     "BlendResult",
     "blend_basic_shape",
     "blend_naive",
+    "join_basic_shapes",
+    "join_naive",
     "freeform_knots",
     "NoMonotoneSolution",
     "monotone_curvature_spline",

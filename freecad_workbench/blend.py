@@ -9,7 +9,12 @@ paper, Section 4.2), and the naive baseline of Fig. 2a.
 
 Shapes of revolution over a full turn around their axis, joined at the end of their
 profile: SphereZone (top latitude), Cylinder and Cone (top height), Torus (last tube angle of
-an open range).
+an open range); or at its start (at="start"; chosen by itself for a dome, whose end is the
+pole).
+
+    dome = fw.shapes.SphereZone((0, 0, 3), 1, longitudes, [0.2, 0.9, math.pi / 2])
+    post = fw.shapes.Cylinder((0, 0, 0), 1, longitudes, [0, 1, 2])
+    joined = fw.join_basic_shapes(post, dome)   # Figs. 9-12: basic shape to basic shape
 """
 from collections import namedtuple
 
@@ -68,36 +73,66 @@ def freeform_knots(shape, method="rho"):
     return _kernel.ring_knots(shape.around, method)
 
 
-def _complex(shape, freeform, method, naive):
+def _interface(shape, at):
+    """'end' or 'start'; None chooses the end unless it is a pole (a dome)."""
+    if at is None:
+        return "start" if shape.pole_at("end") and not shape.pole_at("start") else "end"
+    if at not in ("end", "start"):
+        raise InputError(f"at must be 'end', 'start' or None, not {at!r}")
+    return at
+
+
+def _complex(shape, freeform, method, naive, at):
     frame = (shape.center, shape.x_axis, shape.y_axis)
     ring = _ring(shape, freeform)
     if isinstance(shape, SphereZone):
         if naive:
-            return _kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring)
-        return _kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True)
+            return _kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
+        return _kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True, at)
     if isinstance(shape, (Cylinder, Cone)):
         radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
-        return _kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive)
+        return _kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
     return _kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
-                               ring, True, naive)
+                               ring, True, naive, at)
 
 
-def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho"):
+def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=None):
     """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
     periodic-in-u, clamped-in-v Part.BSplineSurface with the knots of freeform_knots, its
     first row at the interface), or to a default ring that continues the shape, with a C2
     transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
-    or 'mixed' (Section 3)."""
+    or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
+    start where the end is a pole)."""
     _check(shape, continuity, method)
-    return _result(_complex(shape, freeform, method, False))
+    return _result(_complex(shape, freeform, method, False, _interface(shape, at)))
 
 
-def blend_naive(shape, freeform=None, continuity="C2"):
+def blend_naive(shape, freeform=None, continuity="C2", at=None):
     """The naive baseline of Fig. 2a: direct second-order Hermite interpolation of the G2
     shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
     the partition's beta do not match: its .surface is None."""
     _check(shape, continuity, "rho")
-    return _result(_complex(shape, freeform, "rho", True), single=False)
+    return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
-__all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots"]
+def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
+    """Basic shape to basic shape (Figs. 9, 11, 12): the end of shape_a's profile joined to
+    the start of shape_b's by one C2 transition row of degree (6,5); both stay exact. Both
+    need a full turn around their axis with the same number of arcs (the angles may differ:
+    the scalars are averaged, beta~ = sqrt(beta_a beta_b)). Returns a BlendResult; the
+    patches of both shapes are tagged 'basic'. shape_b should continue shape_a (its start
+    beyond shape_a's end along the axis), else the strip folds back."""
+    _check(shape_a, continuity, method)
+    _check(shape_b, continuity, method)
+    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
+
+
+def join_naive(shape_a, shape_b):
+    """The Fig. 2a baseline between two basic shapes: the G2 patches as they are and a (3,5)
+    Hermite strip without reparameterization (its .surface is None: not C2)."""
+    _check(shape_a, "C2", "rho")
+    _check(shape_b, "C2", "rho")
+    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True), single=False)
+
+
+__all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots", "join_basic_shapes", "join_naive"]

@@ -39,6 +39,15 @@ class _Shape:
         """The kernel's G2 control structure (homogeneous Bézier points, weights, scalars)."""
         raise NotImplementedError
 
+    def _revolution(self):
+        """The kernel's description for the shape-to-shape join."""
+        raise NotImplementedError
+
+    def pole_at(self, end):
+        """True where the profile's `end` ('start' or 'end') lies on the axis (a dome's pole):
+        nothing can be joined there."""
+        return False
+
     def patches(self):
         """The shape's rational bicubic patches as Part.BSplineSurface objects, row by row
         (u around the axis, v along the profile)."""
@@ -65,6 +74,13 @@ class SphereZone(_Shape):
     def g2(self):
         return _kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
 
+    def _revolution(self):
+        return _kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes, self.latitudes)
+
+    def pole_at(self, end):
+        latitude = self.latitudes[-1] if end == "end" else self.latitudes[0]
+        return abs(abs(latitude) - np.pi / 2) < 1e-9
+
 
 class Cylinder(_Shape):
     """Circular cylinder: angles around the axis, increasing heights along it."""
@@ -82,6 +98,9 @@ class Cylinder(_Shape):
 
     def g2(self):
         return _kernel.cylinder(*self._frame_args(), self.radius, self.angles, self.heights)
+
+    def _revolution(self):
+        return _kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius, 0.0, self.angles, self.heights)
 
 
 class Cone(_Shape):
@@ -101,6 +120,9 @@ class Cone(_Shape):
     def g2(self):
         return _kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
 
+    def _revolution(self):
+        return _kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
+
 
 class Torus(_Shape):
     """Torus with 0 < minor_radius < major_radius: angles_u around the axis, angles_v
@@ -119,6 +141,10 @@ class Torus(_Shape):
 
     def g2(self):
         return _kernel.torus(*self._frame_args(), self.major_radius, self.minor_radius, self.angles_u, self.angles_v)
+
+    def _revolution(self):
+        return _kernel.ShapeOfRevolution("torus", *self._frame_args(), self.major_radius, self.minor_radius,
+                                         self.angles_u, self.angles_v)
 
 
 __all__ = ["SphereZone", "Cylinder", "Cone", "Torus"]

@@ -77,6 +77,19 @@ const char* roleOf(TaggedPatch::Role r) {
   return r == TaggedPatch::Role::Basic ? "basic" : r == TaggedPatch::Role::Transition ? "transition" : "freeform";
 }
 
+Interface interfaceOf(const std::string& at) {
+  if (at == "end") return Interface::End;
+  if (at == "start") return Interface::Start;
+  throw InputError("the interface must be at the profile's 'end' or 'start', not '" + at + "'");
+}
+
+ShapeOfRevolution::Kind kindOf(const std::string& kind) {
+  if (kind == "sphere") return ShapeOfRevolution::Kind::SphereZone;
+  if (kind == "cone") return ShapeOfRevolution::Kind::Cone;
+  if (kind == "torus") return ShapeOfRevolution::Kind::Torus;
+  throw InputError("a shape of revolution is a 'sphere', 'cone' or 'torus', not '" + kind + "'");
+}
+
 Handle(Geom_BSplineSurface) ringOf(const std::optional<BSplineSurface>& ring) {
   return ring ? toOcct(*ring) : Handle(Geom_BSplineSurface)();
 }
@@ -187,19 +200,20 @@ void bindBlend(py::module_& m) {
       "blend_sphere_zone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
          const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes, const std::string& method,
-         const std::optional<BSplineSurface>& ring, bool bothDirections) {
+         const std::optional<BSplineSurface>& ring, bool bothDirections, const std::string& at) {
         return blendSphereZone(frameOf(o, x, y), radius, longitudes, latitudes, methodOf(method), ringOf(ring),
-                               bothDirections);
+                               bothDirections, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true);
+      "ring"_a = py::none(), "both_directions"_a = true, "at"_a = "end");
   m.def(
       "blend_sphere_zone_naive",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
-         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes, const std::optional<BSplineSurface>& ring) {
-        return blendSphereZoneNaive(frameOf(o, x, y), radius, longitudes, latitudes, ringOf(ring));
+         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes, const std::optional<BSplineSurface>& ring,
+         const std::string& at) {
+        return blendSphereZoneNaive(frameOf(o, x, y), radius, longitudes, latitudes, ringOf(ring), interfaceOf(at));
       },
-      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "ring"_a = py::none());
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "ring"_a = py::none(), "at"_a = "end");
   m.def(
       "make_bspline_surface",
       [](const PointMatrix& poles, const Eigen::VectorXd& weights, const Eigen::VectorXd& knotsU,
@@ -227,22 +241,42 @@ void bindBlend(py::module_& m) {
       "blend_cone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
          const Eigen::VectorXd& angles, const Eigen::VectorXd& heights, const std::string& method,
-         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive, const std::string& at) {
         return blendCone(frameOf(o, x, y), radius0, slope, angles, heights, methodOf(method), ringOf(ring),
-                         bothDirections, naive);
+                         bothDirections, naive, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end");
   m.def(
       "blend_torus",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
          const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV, const std::string& method,
-         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive) {
+         const std::optional<BSplineSurface>& ring, bool bothDirections, bool naive, const std::string& at) {
         return blendTorus(frameOf(o, x, y), R, r, anglesU, anglesV, methodOf(method), ringOf(ring), bothDirections,
-                          naive);
+                          naive, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false);
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end");
+  py::class_<ShapeOfRevolution>(m, "ShapeOfRevolution", "A basic shape of revolution for join_shapes.")
+      .def(py::init([](const std::string& kind, const Eigen::Vector3d& o, const Eigen::Vector3d& x,
+                       const Eigen::Vector3d& y, double size0, double size1, const Eigen::VectorXd& around,
+                       const Eigen::VectorXd& profile) {
+             ShapeOfRevolution s;
+             s.kind = kindOf(kind);
+             s.frame = frameOf(o, x, y);
+             s.size0 = size0;
+             s.size1 = size1;
+             s.around = around;
+             s.profile = profile;
+             return s;
+           }),
+           "kind"_a, "origin"_a, "x"_a, "y"_a, "size0"_a, "size1"_a, "around"_a, "profile"_a);
+  m.def(
+      "join_shapes",
+      [](const ShapeOfRevolution& a, const ShapeOfRevolution& b, const std::string& method, bool bothDirections,
+         bool naive) { return joinShapes(a, b, methodOf(method), bothDirections, naive); },
+      "a"_a, "b"_a, "method"_a = "rho", "both_directions"_a = true, "naive"_a = false,
+      "The end of a's profile joined to the start of b's (Figs. 9, 11, 12).");
   m.def(
       "ring_knots", [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
       "angles"_a, "method"_a = "rho", "The u knots (one period) a free-form ring must have to join a shape.");

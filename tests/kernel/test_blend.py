@@ -144,8 +144,24 @@ def test_bad_blend_requests():
         fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 1.0, 2.0], [0.0, 1.0]))
     with pytest.raises(fw.InputError, match="no boundary"):
         fw.blend_basic_shape(fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, NON_UNIFORM))
-    with pytest.raises(fw.InputError, match="below pi/2"):
-        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]))
+    with pytest.raises(fw.InputError, match="pole"):
+        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]), at="end")
+    with pytest.raises(fw.InputError, match="at must be"):
+        fw.blend_basic_shape(zone, at="top")
+
+
+def test_dome_blends_at_its_bottom():
+    # A dome's end is its pole: the ring joins at the start of the profile, below the dome.
+    dome = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, [0.3, 0.9, math.pi / 2], axis=AXIS)
+    result = fw.blend_basic_shape(dome)
+    assert result.surface.Continuity == "C2"
+    assert result.shell.isValid()
+    c = FreeCAD.Vector(*CENTER)
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs((p - c).Length - 2.0) for s in basic for p in samples(s, 6)) < 1e-10 * 2.0
+    axis = FreeCAD.Vector(*AXIS).normalize()
+    ring = [s for role, s in result.patches if role == "freeform"]
+    assert max((p - c).dot(axis) for s in ring for p in samples(s, 4)) < 2.0 * math.sin(0.3)
 
 
 def test_user_ring_on_the_interface_knots_blends_c2():

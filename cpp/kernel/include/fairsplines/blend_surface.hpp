@@ -71,7 +71,9 @@ Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
 /// degree (6,3) that stay on the sphere; the second-order Hermite data (three layers of
 /// Bézier coefficients) of the sphere at its top and of the ring at its first row are
 /// degree-raised to (6,5) and fill one transition row (scalar 1 across both seams).
-/// Throws InputError for an open longitude partition, a top latitude of pi/2, or a ring
+/// `at`: the interface at the top latitude (End) or the bottom one (Start, e.g. a dome whose
+/// top is the pole). Throws InputError for an open longitude partition, an interface at a
+/// pole (latitude +-pi/2), or a ring
 /// whose structure does not match the interface.
 /// With sexticInV the latitudes are converted too ("or in both" directions, Section 4.2):
 /// basic patches of degree (6,6), the whole complex C2 and a tensor grid (singleSurface).
