@@ -134,18 +134,56 @@ TEST(SphereBlend, NaiveBaselineFailsTheSameCheckOnNonUniformPartitions) {
   EXPECT_LT(r.alongU[c.rowsBasic + 1], 1e-8);      // (the ring is)
 }
 
+TEST(SphereBlend, RingOnOtherKnotsSharesTheParameterizationAndBlendsC2) {
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd lon = nonUniformTurn(), lat = vec({-0.6, 0.1, 0.5});
+  // A ring on uniform knots 0..7 (not the arc knots): its period is mapped onto the circle's,
+  // the sextic pieces are split at its knots and it gets theirs.
+  const Handle(Geom_BSplineSurface) uniformRing =
+      defaultSphereRing(f, 1.0, lon, lat, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
+  const BlendComplex plain = blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, nullptr, true);
+  const BlendComplex c = blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, uniformRing, true);
+  EXPECT_GT(c.piecesU, plain.piecesU);
+  EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
+  EXPECT_LT(seams(c).worst, 1e-8);
+  EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+  // The ring is unchanged: its patches lie on the user's surface.
+  const double u0 = uniformRing->UKnot(1), P = uniformRing->UKnot(uniformRing->NbUKnots()) - u0;
+  const double T = c.knotsU[c.piecesU];
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::FreeForm || p.vPiece != c.rowsBasic + 1) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 4; ++a) {
+      const double x = (a / 4.0), u = c.knotsU[p.uPiece] + x * (c.knotsU[p.uPiece + 1] - c.knotsU[p.uPiece]);
+      worst = std::max(worst, s->Value(x, 0.5).Distance(uniformRing->Value(u0 + u * P / T, 0.5)));
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
 TEST(SphereBlend, RingThatDoesNotMatchTheInterfaceRaisesInputError) {
   const ShapeFrame f = tilted();
   const Eigen::VectorXd lon = nonUniformTurn(), lat = vec({-0.6, 0.1, 0.5});
-  // A ring built on uniform knots does not match the non-uniform arcs.
-  const Handle(Geom_BSplineSurface) uniformRing =
-      defaultSphereRing(f, 1.0, lon, lat, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
-  try {
-    blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, uniformRing);
-    FAIL() << "expected InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("does not match the interface"), std::string::npos);
-  }
+  const Handle(Geom_BSplineSurface) ring = defaultSphereRing(f, 1.0, lon, lat, ringKnots(lon));
+  auto expectMismatch = [&](const Handle(Geom_BSplineSurface)& bad, const char* why) {
+    try {
+      blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, bad);
+      FAIL() << "expected InputError: " << why;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("does not match the interface"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+    }
+  };
+  Handle(Geom_BSplineSurface) reversed = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  reversed->UReverse();
+  expectMismatch(reversed, "other way");
+  Handle(Geom_BSplineSurface) away = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  away->Translate(gp_Vec(f.x.x() * 5, f.x.y() * 5, f.x.z() * 5));
+  expectMismatch(away, "does not go once around");
+  Handle(Geom_BSplineSurface) open = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  open->SetUNotPeriodic();
+  expectMismatch(open, "periodic");
   EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 1.0, 2.0}), lat), InputError);                  // not a full turn
   EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);                    // top at the pole
 }

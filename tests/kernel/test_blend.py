@@ -180,3 +180,31 @@ def test_user_ring_on_the_interface_knots_blends_c2():
     freeform = [s for role, s in result.patches if role == "freeform"]
     top = max(p.z for s in freeform for row in s.getPoles() for p in row)
     assert abs(top - (0.75 + 0.45)) < 1e-12
+
+
+def test_any_periodic_bicubic_ring_around_the_axis_blends_c2():
+    # A ring on its own uniform knots (not freeform_knots): both sides get each other's knots.
+    zone = fw.shapes.SphereZone((0, 0, 0), 1.0, NON_UNIFORM, LATITUDES)
+    m = 9
+    rows = [[FreeCAD.Vector(0.8 * math.cos(a), 0.8 * math.sin(a), 0.75 + 0.15 * j) for j in range(4)]
+            for a in np.linspace(0, 2 * math.pi, m, endpoint=False)]
+    ring = Part.BSplineSurface()
+    ring.buildFromPolesMultsKnots(rows, [1] * (m + 1), [4, 4], [10.0 + 2 * k for k in range(m + 1)], [0.0, 1.0],
+                                  True, False, 3, 3)
+    result = fw.blend_basic_shape(zone, freeform=ring)
+    assert result.surface.Continuity == "C2"
+    assert result.shell.isValid()
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs(p.Length - 1.0) for s in basic for p in samples(s, 6)) < 1e-10
+    # every free-form patch lies on the user's ring
+    freeform = [s for role, s in result.patches if role == "freeform"]
+    worst = 0.0
+    for s in freeform:
+        for p in samples(s, 4):
+            u, v = ring.parameter(p)
+            worst = max(worst, (ring.value(u, v) - p).Length)
+    assert worst < 1e-9
+    reversed_ring = ring.copy()
+    reversed_ring.exchangeUV()  # no longer periodic in u
+    with pytest.raises(fw.InputError, match="does not match the interface"):
+        fw.blend_basic_shape(zone, freeform=reversed_ring)

@@ -203,6 +203,65 @@ Homogeneous4 hermiteStrip(const Homogeneous4& lower, int dvLower, const Homogene
   return out;
 }
 
+/// de Casteljau: the Bézier rows b split at t into the pieces over [0, t] and [t, 1].
+void splitBezier(const PointMatrix& b, double t, PointMatrix& left, PointMatrix& right) {
+  const Eigen::Index n = b.rows() - 1;
+  PointMatrix work = b;
+  left.resize(n + 1, b.cols());
+  right.resize(n + 1, b.cols());
+  left.row(0) = work.row(0);
+  right.row(n) = work.row(n);
+  for (Eigen::Index r = 1; r <= n; ++r) {
+    for (Eigen::Index i = 0; i <= n - r; ++i) work.row(i) = (1 - t) * work.row(i) + t * work.row(i + 1);
+    left.row(r) = work.row(0);
+    right.row(n - r) = work.row(n - r);
+  }
+}
+
+}  // namespace
+
+C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vector<double>>& cuts) {
+  if (static_cast<int>(cuts.size()) != c2.pieces()) throw InputError("splitPieces needs one list of cuts per piece");
+  const Eigen::VectorXd t = c2.knots();
+  std::vector<PointMatrix> pieces;
+  std::vector<double> lengths;
+  std::vector<int> newIndex(c2.pieces() + 1, 0);
+  for (int k = 0; k < c2.pieces(); ++k) {
+    newIndex[k] = static_cast<int>(pieces.size());
+    PointMatrix rest = c2.bezier.middleRows(7 * k, 7);
+    double done = 0.0;  // the part of piece k already cut off
+    for (double x : cuts[k]) {
+      if (!(x > done && x < 1.0)) throw InputError("cuts must increase strictly inside (0, 1)");
+      PointMatrix left, right;
+      splitBezier(rest, (x - done) / (1.0 - done), left, right);
+      pieces.push_back(left);
+      lengths.push_back((x - done) * (t[k + 1] - t[k]));
+      rest = right;
+      done = x;
+    }
+    pieces.push_back(rest);
+    lengths.push_back((1.0 - done) * (t[k + 1] - t[k]));
+  }
+  newIndex[c2.pieces()] = static_cast<int>(pieces.size());
+  C2SexticSpline out;
+  out.closed = c2.closed;
+  for (int first : c2.firstPiece) out.firstPiece.push_back(newIndex[first]);
+  const int P = static_cast<int>(pieces.size());
+  out.bezier.resize(7 * P, c2.bezier.cols());
+  out.beta.resize(P);
+  for (int k = 0; k < P; ++k) {
+    out.bezier.middleRows(7 * k, 7) = pieces[k];
+    out.beta[k] = k > 0 ? lengths[k] / lengths[k - 1] : 1.0;
+  }
+  // The closing join keeps its scalar, rescaled by the new lengths of the first and last pieces.
+  const int last = c2.pieces() - 1;
+  out.beta[0] = c2.closed ? c2.beta[0] * (lengths[0] / (t[1] - t[0])) / (lengths[P - 1] / (t[last + 1] - t[last]))
+                          : c2.beta[0];
+  return out;
+}
+
+namespace {
+
 /// Checks the ring against the interface and returns it with its u knots inserted at `cuts`.
 Handle(Geom_BSplineSurface) matchRing(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& arcT,
                                       const Eigen::VectorXd& cuts) {
@@ -235,6 +294,66 @@ Handle(Geom_BSplineSurface) matchRing(const Handle(Geom_BSplineSurface)& ring, c
   return r;
 }
 
+
+/// A user ring's structure (periodic in u, bicubic, clamped in v) and its first row going
+/// once around the axis in the direction of u; returns a copy whose u period is mapped
+/// affinely onto [0, period] (its first knot to the shape's first angle).
+Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
+                                           double period) {
+  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  if (ring.IsNull()) throw mismatch("no surface");
+  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (ring->UDegree() != 3 || ring->VDegree() != 3) throw mismatch("it must be bicubic");
+  if (ring->VMultiplicity(1) != 4) throw mismatch("it must be clamped in v (its first row is the interface)");
+  const double u0 = ring->UKnot(1), P = ring->UKnot(ring->NbUKnots()) - u0, v0 = ring->VKnot(1);
+  // Winding number of the first row about the axis, from 64 samples per knot span.
+  const int samples = 64 * (ring->NbUKnots() - 1);
+  double turned = 0.0, previous = 0.0;
+  for (int k = 0; k <= samples; ++k) {
+    const gp_Pnt q = ring->Value(u0 + P * k / samples, v0);
+    const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - frame.origin;
+    const double angle = std::atan2(d.dot(frame.y), d.dot(frame.x));
+    if (k > 0) turned += std::remainder(angle - previous, 2 * kPi);
+    previous = angle;
+  }
+  const double winding = turned / (2 * kPi);
+  if (std::abs(winding + 1) < 0.5) throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
+  if (std::abs(winding - 1) >= 0.5) throw mismatch("its first row does not go once around the shape's axis");
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  TColStd_Array1OfReal knots(1, r->NbUKnots());
+  for (int i = 1; i <= r->NbUKnots(); ++i) knots.SetValue(i, (r->UKnot(i) - u0) * period / P);
+  r->SetUKnots(knots);
+  return r;
+}
+
+/// The ring with every knot of `knotsU` inserted (those it lacks), so that each u-interval
+/// is one Bézier span.
+Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  const double period = knotsU[knotsU.size() - 1] - knotsU[0];
+  for (Eigen::Index k = 0; k < knotsU.size(); ++k) {
+    bool existing = false;
+    for (int i = 1; i <= ring->NbUKnots(); ++i) existing = existing || std::abs(knotsU[k] - ring->UKnot(i)) <= 1e-12 * period;
+    if (!existing) r->InsertUKnot(knotsU[k], 1, 1e-12 * period);
+  }
+  return r;
+}
+
+/// Cuts (local parameters per piece) where the ring has u knots inside the pieces of knotsU.
+std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+  const int P = static_cast<int>(knotsU.size()) - 1;
+  const double period = knotsU[P] - knotsU[0];
+  std::vector<std::vector<double>> cuts(P);
+  for (int i = 1; i <= ring->NbUKnots(); ++i) {
+    const double u = ring->UKnot(i);
+    for (int k = 0; k < P; ++k) {
+      if (u > knotsU[k] + 1e-9 * period && u < knotsU[k + 1] - 1e-9 * period) {
+        cuts[k].push_back((u - knotsU[k]) / (knotsU[k + 1] - knotsU[k]));
+      }
+    }
+  }
+  return cuts;
+}
 }  // namespace
 
 Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch) {
@@ -343,11 +462,29 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
                            CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {
   // Step 1: along the interface the G2 circle becomes the C2 sextic of 4.1 (betaT = beta,
   // the heuristic of Section 3); the basic shape stays exact.
-  const C2SexticSpline c2 = circleToC2(lon, method);
+  C2SexticSpline c2 = circleToC2(lon, method);
   const Eigen::VectorXd T = arcKnots(c2);
   const double scale = T[1] / (c2.knots()[c2.firstPiece[1]]);
   BlendComplex out;
   out.knotsU = c2.knots() * scale;
+  // A user ring: its u period mapped onto the circle's; where it has knots inside the
+  // sextic's pieces, those pieces are split there (exactly, de Casteljau), and the ring gets
+  // the sextic's knots: both sides then share one C2 parameterization without changing either.
+  Handle(Geom_BSplineSurface) r;
+  if (ring.IsNull()) {
+    r = defaultRing(frame, lon, profile, T);
+  } else {
+    r = normalisedRing(ring, frame, out.knotsU[out.knotsU.size() - 1]);
+    const std::vector<std::vector<double>> cuts = ringCuts(r, out.knotsU);
+    const bool any = std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); });
+    if (any) {
+      const double period = out.knotsU[out.knotsU.size() - 1];
+      c2 = splitPieces(c2, cuts);
+      const Eigen::VectorXd t = c2.knots();
+      out.knotsU = t * (period / t[t.size() - 1]);
+    }
+  }
+  r = withKnots(r, out.knotsU);
   out.piecesU = c2.pieces();
   out.basicC2InV = sexticInV;
   // Across the interface: the profile's G2 cubics as they are, or its C2 sextics.
@@ -356,8 +493,6 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
                                                 : Eigen::VectorXd::LinSpaced(profile.cubic.size() + 1, 0.0, profile.cubic.size());
   const int dvBasic = sexticInV ? 6 : 3;
   out.rowsBasic = static_cast<int>(profiles.size());
-  if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
-  const Handle(Geom_BSplineSurface) r = matchRing(ring, T, out.knotsU);
   const int spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
   // Shared v parameterization: scalar 1 across both seams of the strip.
@@ -509,21 +644,6 @@ BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen
 
 namespace {
 
-/// de Casteljau: the Bézier rows b split at t into the pieces over [0, t] and [t, 1].
-void splitBezier(const PointMatrix& b, double t, PointMatrix& left, PointMatrix& right) {
-  const Eigen::Index n = b.rows() - 1;
-  PointMatrix work = b;
-  left.resize(n + 1, b.cols());
-  right.resize(n + 1, b.cols());
-  left.row(0) = work.row(0);
-  right.row(n) = work.row(n);
-  for (Eigen::Index r = 1; r <= n; ++r) {
-    for (Eigen::Index i = 0; i <= n - r; ++i) work.row(i) = (1 - t) * work.row(i) + t * work.row(i + 1);
-    left.row(r) = work.row(0);
-    right.row(n - r) = work.row(n - r);
-  }
-}
-
 /// One side of a shape-to-shape join: the circle around the axis and the profile.
 struct JoinSide {
   ShapeFrame frame;
@@ -598,13 +718,7 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
 C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& parts) {
   const int n = static_cast<int>(c2.firstPiece.size()) - 1;
   if (static_cast<int>(parts.size()) != n) throw InputError("refineArcs needs one piece count per arc");
-  const Eigen::VectorXd t = c2.knots();
-  std::vector<PointMatrix> pieces;
-  std::vector<double> lengths;
-  C2SexticSpline out;
-  out.closed = c2.closed;
-  out.firstPiece.push_back(0);
-  int firstSplit = 1, lastSplit = 1;
+  std::vector<std::vector<double>> cuts(c2.pieces());
   for (int i = 0; i < n; ++i) {
     const int have = c2.firstPiece[i + 1] - c2.firstPiece[i];
     if (parts[i] < have || parts[i] % have != 0) {
@@ -613,33 +727,11 @@ C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& part
       throw InputError(os.str());
     }
     const int m = parts[i] / have;  // every piece of the arc into m equal parts
-    if (i == 0) firstSplit = m;
-    if (i + 1 == n) lastSplit = m;
     for (int k = c2.firstPiece[i]; k < c2.firstPiece[i + 1]; ++k) {
-      PointMatrix rest = c2.bezier.middleRows(7 * k, 7);
-      const double h = (t[k + 1] - t[k]) / m;
-      for (int j = m; j > 1; --j) {  // cut off 1/j of what is left
-        PointMatrix left, right;
-        splitBezier(rest, 1.0 / j, left, right);
-        pieces.push_back(left);
-        lengths.push_back(h);
-        rest = right;
-      }
-      pieces.push_back(rest);
-      lengths.push_back(h);
+      for (int j = 1; j < m; ++j) cuts[k].push_back(static_cast<double>(j) / m);
     }
-    out.firstPiece.push_back(static_cast<int>(pieces.size()));
   }
-  const int P = static_cast<int>(pieces.size());
-  out.bezier.resize(7 * P, c2.bezier.cols());
-  out.beta.resize(P);
-  for (int k = 0; k < P; ++k) {
-    out.bezier.middleRows(7 * k, 7) = pieces[k];
-    out.beta[k] = k > 0 ? lengths[k] / lengths[k - 1] : 1.0;
-  }
-  // The closing join keeps its scalar, rescaled by the new lengths of the last and first pieces.
-  out.beta[0] = c2.closed ? c2.beta[0] * lastSplit / firstSplit : c2.beta[0];
-  return out;
+  return splitPieces(c2, cuts);
 }
 
 BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution& shapeB, CircleReparam method,

@@ -154,6 +154,11 @@ BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b, 
 /// interval lengths. Throws InputError for a count that is not a multiple.
 C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& parts);
 
+/// Splits piece k of a C2 sextic spline at the local parameters cuts[k] (increasing, inside
+/// (0, 1)) by de Casteljau: the curve and its C2 joins are unchanged; the scalars follow the
+/// new interval lengths and firstPiece the arcs. Throws InputError for cuts out of order.
+C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vector<double>>& cuts);
+
 /// Every patch as a face, sewn into one shell (BRepBuilderAPI_Sewing, tolerance relative
 /// to the complex's size). Throws InputError if sewing does not give a single shell.
 TopoDS_Shape sewnShell(const BlendComplex& complex, double tolerance = 1e-7);
