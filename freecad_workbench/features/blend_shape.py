@@ -12,13 +12,18 @@ the axis a full turn (the partition may be non-uniform), along the profile latit
 (sphere zone) or tube angles (torus); heights (cylinder, cone) are lengths. With `Uniform`
 on, the lists are generated from `AroundCount` arcs over the full turn and `ProfileCount`
 pieces from `ProfileStart` to `ProfileEnd`; off, the kind's lists are used as they are.
-`Patches` counts the patches per role. Bad input (angles that do not increase, a radius
-that is not positive, a ring that would reach the axis) keeps the last good shape and puts
-the reason in `Status`.
+`FreeForm` links a B-spline face to join instead of the default ring (bicubic, periodic
+around the axis, clamped along it: any knots, they are merged with the shape's); it moves
+with its object. `Interface` picks the end of the profile the free-form side joins (Auto:
+the end, or the start where the end is a pole, as for a dome). `Patches` counts the
+patches per role. Bad input (angles that do not increase, a radius that is not positive, a
+ring that would reach the axis, a face that is not a matching B-spline ring) keeps the last
+good shape and puts the reason in `Status`.
 """
 import math
 
 import FreeCAD
+import Part
 
 from .. import blend, shapes
 from ..errors import InputError
@@ -27,6 +32,7 @@ from .undo import undo_step
 
 KINDS = ("Sphere zone", "Cylinder", "Cone", "Torus")
 METHODS = ("rho", "sigma", "mixed")
+INTERFACES = ("Auto", "End", "Start")
 
 # The dimensions of each kind: the lengths, then (around list, profile list).
 KIND_LENGTHS = {
@@ -93,6 +99,10 @@ _PROPERTIES = (
      "height)", None, 0),
     ("App::PropertyEnumeration", "Method", "Reparameterization of the transition (Section 3): rho, sigma or "
      "mixed", "rho", 0),
+    ("App::PropertyLinkSub", "FreeForm", "A B-spline face to join instead of the default ring: bicubic, periodic "
+     "around the axis (in u), clamped along it, its first row near the interface", None, 0),
+    ("App::PropertyEnumeration", "Interface", "Where the free-form side joins the profile: Auto (its end, or its "
+     "start where the end is a pole), End or Start", "Auto", 0),
     ("App::PropertyBool", "Naive", "Build the naive blend of Fig. 2a instead (not C2), for comparison", False, 0),
     ("App::PropertyString", "Patches", "Number of patches per role (basic, transition, freeform)", "", 1),
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
@@ -106,10 +116,10 @@ class BlendShape(FeatureProxy):
     sewn shell."""
 
     Type = "BlendShape"
-    VERSION = 1
+    VERSION = 2  # 2: FreeForm, Interface
     GROUP = "Blend basic shape"
     PROPERTIES = _PROPERTIES
-    ENUMERATIONS = {"Kind": KINDS, "Method": METHODS}
+    ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES}
     OUTPUTS = ("Status", "Patches")
 
     def ensure_properties(self, obj):
@@ -185,28 +195,72 @@ def basic_shape(obj):
     return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile)
 
 
+def freeform_surface(obj):
+    """The Part.BSplineSurface of obj's FreeForm face in obj's local coordinates, or None
+    (the default ring). InputError if the link is not a B-spline face."""
+    link = obj.FreeForm
+    if link is None or link[0] is None:
+        return None
+    source, subs = link
+    sub = subs[0] if subs else ""
+    origin = f"{source.Label}.{sub}" if sub else source.Label
+    shape = getattr(source, "Shape", None)
+    if shape is None or shape.isNull():
+        raise InputError(f"FreeForm {origin} has no shape")
+    if sub:
+        try:
+            face = shape.getElement(sub)
+        except Exception:  # noqa: BLE001 (FreeCAD raises plain exceptions for a bad name)
+            raise InputError(f"FreeForm {origin} does not exist") from None
+    elif len(shape.Faces) == 1:
+        face = shape.Faces[0]
+    else:
+        raise InputError(f"FreeForm {origin} has {len(shape.Faces)} faces: pick one")
+    if not isinstance(face, Part.Face):
+        raise InputError(f"FreeForm {origin} is not a face")
+    surface = face.Surface
+    if not isinstance(surface, Part.BSplineSurface):
+        raise InputError(f"FreeForm {origin} is a {type(surface).__name__}, not a B-spline surface")
+    surface = surface.copy()
+    surface.transform(obj.Placement.inverse().toMatrix())
+    return surface
+
+
 def blend_result(obj):
     """fw.BlendResult of obj (local coordinates): the C2 blend, or the naive one."""
     shape = basic_shape(obj)
+    ring = freeform_surface(obj)
+    at = None if obj.Interface == "Auto" else obj.Interface.lower()
     if obj.Naive:
-        return blend.blend_naive(shape)
-    return blend.blend_basic_shape(shape, method=obj.Method)
+        return blend.blend_naive(shape, freeform=ring, at=at)
+    return blend.blend_basic_shape(shape, freeform=ring, method=obj.Method, at=at)
 
 
 def is_blend_shape(obj):
     return isinstance(getattr(obj, "Proxy", None), BlendShape)
 
 
-def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, **dimensions):
+def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, freeform=None,
+                     interface="Auto", **dimensions):
     """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
     step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
     units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
-    Uniform is given. Bad dimensions leave the object with the message in its Status;
-    unknown kinds, methods or dimensions raise InputError."""
+    Uniform is given. freeform: a B-spline face to join, as (object, "FaceN") or an object
+    with one face (None: the default ring); interface: "Auto", "End" or "Start". Bad
+    dimensions leave the object with the message in its Status; unknown kinds, methods,
+    interfaces or dimensions raise InputError."""
     if kind not in KINDS:
         raise InputError(f"unknown kind {kind!r}: use one of {', '.join(KINDS)}")
     if method not in METHODS:
         raise InputError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
+    if interface not in INTERFACES:
+        raise InputError(f"unknown interface {interface!r}: use one of {', '.join(INTERFACES)}")
+    link = None
+    if freeform is not None:
+        source, sub = freeform if isinstance(freeform, (tuple, list)) else (freeform, "")
+        if not isinstance(source, FreeCAD.DocumentObject):
+            raise InputError(f"freeform is not a document object: {source!r}")
+        link = (source, [sub]) if sub else source
     allowed = set(KIND_PROPERTIES[kind]) | {"Uniform"}
     unknown = sorted(set(dimensions) - allowed)
     if unknown:
@@ -220,6 +274,9 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         obj.Kind = kind
         obj.Method = method
         obj.Naive = bool(naive)
+        obj.Interface = interface
+        if link is not None:
+            obj.FreeForm = link
         for key, value in values.items():
             setattr(obj, key, [float(v) for v in value] if isinstance(value, (list, tuple)) else value)
         if placement is not None:

@@ -161,3 +161,93 @@ def test_factory_rejects_unknown_kinds_methods_and_dimensions(doc):
     with pytest.raises(InputError, match="no dimension Heights"):
         make_blend_shape(doc, "Torus", Heights=[0, 1])
     assert not doc.Objects
+
+
+def _ring_object(doc, radius=6.0, z0=8.5, poles=9, name="Ring"):
+    """A periodic bicubic ring around the Z axis, on its own uniform knots, as a Part::Feature."""
+    import math
+
+    import Part
+
+    rows = [[FreeCAD.Vector(radius * math.cos(a), radius * math.sin(a), z0 + 0.6 * j) for j in range(4)]
+            for a in np.linspace(0, 2 * math.pi, poles, endpoint=False)]
+    ring = Part.BSplineSurface()
+    ring.buildFromPolesMultsKnots(rows, [1] * (poles + 1), [4, 4], [float(k) for k in range(poles + 1)], [0.0, 1.0],
+                                  True, False, 3, 3)
+    obj = doc.addObject("Part::Feature", name)
+    obj.Shape = Part.Face(ring)
+    doc.recompute()
+    return obj
+
+
+def _distance_to(surface, points):
+    worst = 0.0
+    for p in points:
+        q = FreeCAD.Vector(*p)
+        u, v = surface.parameter(q)
+        worst = max(worst, (surface.value(u, v) - q).Length)
+    return worst
+
+
+def test_a_linked_bspline_face_is_the_free_form_side_and_moves_with_its_object(doc, tmp_path):
+    ring = _ring_object(doc)
+    obj = make_blend_shape(doc, "Sphere zone", freeform=(ring, "Face1"))
+    assert obj.Status == "ok", obj.Status
+    assert obj.Shape.isValid()
+    counts = dict(item.split() for item in obj.Patches.split(", "))
+    assert int(counts["freeform"]) == int(counts["transition"]) > 6  # the ring's 9 knots merged in
+    # the free-form patches are pieces of the linked surface itself
+    on_ring = [f for f in obj.Shape.Faces if _distance_to(ring.Shape.Faces[0].Surface, surface_points(f, 3)) < 1e-9]
+    assert len(on_ring) == int(counts["freeform"])
+    # moving the ring recomputes the blend onto the moved ring
+    ring.Placement = FreeCAD.Placement(FreeCAD.Vector(0, 0, 1.5), FreeCAD.Rotation())
+    doc.recompute()
+    assert obj.Status == "ok"
+    moved = ring.Shape.Faces[0].Surface
+    assert sum(_distance_to(moved, surface_points(f, 3)) < 1e-9 for f in obj.Shape.Faces) == len(on_ring)
+    # save and reopen keep the link
+    path = str(tmp_path / "ring.FCStd")
+    doc.saveAs(path)
+    name, obj_name = doc.Name, obj.Name
+    FreeCAD.closeDocument(name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        again = reopened.getObject(obj_name)
+        assert again.FreeForm[0].Name == "Ring" and again.FreeForm[1] == ["Face1"]
+        again.touch()
+        reopened.recompute()
+        assert again.Status == "ok"
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+        FreeCAD.newDocument(name)
+
+
+def test_a_face_that_is_no_ring_keeps_the_last_good_shape(doc):
+    import Part
+
+    obj = make_blend_shape(doc, "Cylinder")
+    points = surface_points(obj.Shape)
+    box = doc.addObject("Part::Feature", "Box")
+    box.Shape = Part.makeBox(2, 2, 2)
+    obj.FreeForm = (box, ["Face1"])
+    doc.recompute()
+    assert "not a B-spline surface" in obj.Status
+    np.testing.assert_array_equal(surface_points(obj.Shape), points)
+    away = _ring_object(doc, radius=3.0, name="Away")
+    away.Placement = FreeCAD.Placement(FreeCAD.Vector(40, 0, 0), FreeCAD.Rotation())
+    obj.FreeForm = (away, ["Face1"])
+    doc.recompute()
+    assert "does not go once around" in obj.Status
+    obj.FreeForm = None
+    doc.recompute()
+    assert obj.Status == "ok"
+
+
+def test_a_dome_joins_at_its_start(doc):
+    obj = make_blend_shape(doc, "Sphere zone", Uniform=True, ProfileStart=20.0, ProfileEnd=90.0)
+    assert obj.Status == "ok" and obj.Shape.isValid()
+    z = surface_points(obj.Shape)[:, 2]
+    assert z.min() < 10.0 * np.sin(np.radians(20.0)) - 1.0  # the ring hangs below the dome
+    obj.Interface = "End"
+    doc.recompute()
+    assert "pole" in obj.Status
