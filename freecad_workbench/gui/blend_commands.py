@@ -9,6 +9,7 @@ import FreeCAD
 import FreeCADGui
 
 from ..features.blend_shape import (
+    INTERFACES,
     KIND_DEFAULTS,
     KIND_LENGTHS,
     KIND_LISTS,
@@ -168,7 +169,7 @@ class BlendShapePanel(LiveEditPanel):
         self.doc = obj.Document
         dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
         self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
-                                ["Kind", "Uniform", "Method", "Naive"] + dimensions)
+                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface"] + dimensions)
         self._updating = False
         self.widgets = {}
 
@@ -200,7 +201,30 @@ class BlendShapePanel(LiveEditPanel):
         self.naive.setChecked(bool(obj.Naive))
         self.naive.toggled.connect(self.set_naive)
         bottom.addRow(self.naive)
+        self.interface = QtWidgets.QComboBox()
+        self.interface.addItems([translate("FairSplines", i) for i in INTERFACES])
+        self.interface.setCurrentIndex(INTERFACES.index(obj.Interface))
+        self.interface.setToolTip(translate("FairSplines", "Which end of the profile joins the free-form side; "
+                                                           "Auto: the end, or the start where the end is a pole"))
+        self.interface.currentIndexChanged.connect(lambda i: self.set_interface(INTERFACES[i]))
+        bottom.addRow(translate("FairSplines", "Join at"), self.interface)
         layout.addLayout(bottom)
+        freeform_box = QtWidgets.QGroupBox(translate("FairSplines", "Free-form side"))
+        freeform_layout = QtWidgets.QVBoxLayout(freeform_box)
+        self.freeform_label = QtWidgets.QLabel()
+        self.freeform_label.setWordWrap(True)
+        freeform_layout.addWidget(self.freeform_label)
+        buttons = QtWidgets.QHBoxLayout()
+        self.use_face = QtWidgets.QPushButton(translate("FairSplines", "Use selected face"))
+        self.use_face.setToolTip(translate("FairSplines", "A B-spline face, bicubic and periodic around the axis "
+                                                          "(any knots), its first row near the interface"))
+        self.use_face.clicked.connect(self.use_selected_face)
+        self.default_ring = QtWidgets.QPushButton(translate("FairSplines", "Default ring"))
+        self.default_ring.clicked.connect(lambda: self.set_freeform(None))
+        buttons.addWidget(self.use_face)
+        buttons.addWidget(self.default_ring)
+        freeform_layout.addLayout(buttons)
+        layout.addWidget(freeform_box)
         self.patches_label = QtWidgets.QLabel()
         layout.addWidget(self.patches_label)
         self.status_label = QtWidgets.QLabel()
@@ -328,6 +352,32 @@ class BlendShapePanel(LiveEditPanel):
                 self.naive.setChecked(bool(on))
                 self._updating = False
 
+    def set_interface(self, interface):
+        if not self._updating and interface != self.obj.Interface:
+            self._apply([("Interface", interface)])
+            self._select(self.interface, INTERFACES.index(interface))
+
+    def set_freeform(self, link):
+        """Join the linked B-spline face ((object, ["FaceN"])), or the default ring (None)."""
+        current = self.obj.FreeForm
+        if link is None and (current is None or current[0] is None):
+            return
+        self._apply([("FreeForm", link)])
+
+    def use_selected_face(self):
+        """The face selected in the 3D view (not one of this object's own) as the free-form side."""
+        for sel in FreeCADGui.Selection.getSelectionEx(self.doc.Name):
+            if sel.Object == self.obj:
+                continue
+            faces = [n for n in sel.SubElementNames if n.startswith("Face")]
+            if faces:
+                self.set_freeform((sel.Object, [faces[0]]))
+                return
+            if len(getattr(sel.Object, "Shape", None) and sel.Object.Shape.Faces or []) == 1:
+                self.set_freeform((sel.Object, ["Face1"]))
+                return
+        self.show_status(translate("FairSplines", "select a B-spline face of another object first"))
+
     def _select(self, combo, index):
         if combo.currentIndex() != index:
             self._updating = True
@@ -340,6 +390,12 @@ class BlendShapePanel(LiveEditPanel):
 
     def refresh(self):
         self.patches_label.setText(translate("FairSplines", "Patches: {}").format(self.obj.Patches))
+        link = self.obj.FreeForm
+        if link is None or link[0] is None:
+            self.freeform_label.setText(translate("FairSplines", "Default ring (continues the shape)"))
+        else:
+            subs = ", ".join(link[1]) if link[1] else ""
+            self.freeform_label.setText(f"{link[0].Label}.{subs}" if subs else link[0].Label)
         self.show_status(self.obj.Status)
 
 

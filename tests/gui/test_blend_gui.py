@@ -223,3 +223,42 @@ def test_saved_blend_reopens_with_its_zebra_view(scene, tmp_path):
         assert again.ViewObject.DisplayMode == "Zebra" and again.Status == "ok"
     finally:
         FreeCAD.closeDocument(reopened.Name)
+
+
+def test_panel_takes_a_selected_bspline_face_as_the_free_form_side(scene, artifacts):
+    import math
+
+    import Part
+
+    doc = scene
+    rows = [[FreeCAD.Vector(6 * math.cos(a), 6 * math.sin(a), 8.5 + 0.6 * j) for j in range(4)]
+            for a in np.linspace(0, 2 * math.pi, 9, endpoint=False)]
+    surface = Part.BSplineSurface()
+    surface.buildFromPolesMultsKnots(rows, [1] * 10, [4, 4], [float(k) for k in range(10)], [0.0, 1.0],
+                                     True, False, 3, 3)
+    ring = doc.addObject("Part::Feature", "Ring")
+    ring.Shape = Part.Face(surface)
+    doc.recompute()
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    default = blend.Patches
+    assert "Default ring" in panel.freeform_label.text()
+    panel.use_selected_face()  # nothing selected: a message, nothing changed
+    assert "select a B-spline face" in panel.status_label.text() and blend.FreeForm is None
+    gui().Selection.addSelection(ring, "Face1")
+    panel.use_selected_face()
+    assert blend.FreeForm[0] == ring and blend.Status == "ok", blend.Status
+    assert blend.Patches != default and "Ring.Face1" in panel.freeform_label.text()
+    ring.ViewObject.Visibility = False
+    gui().updateGui()
+    image = screenshot(doc, os.path.join(artifacts, "blend_user_ring_zebra.png"))
+    dark, white = stripe_pixels(image)
+    assert dark > 5000 and white > 5000, (dark, white)
+    panel.interface.setCurrentIndex(2)  # Start: the ring is then far from the interface, still C2
+    assert blend.Interface == "Start"
+    panel.interface.setCurrentIndex(0)
+    panel.default_ring.click()
+    assert blend.FreeForm is None and blend.Patches == default
+    panel.reject()
+    gui().updateGui()
+    assert blend.FreeForm is None
