@@ -10,6 +10,8 @@ Writes into $FAIRSPLINES_OUT (default: out/demo):
   design_curvature.png     design with basic curves (Figs. 14 and 10): curvature plots
   monotone_curvature.png   a monotone-curvature blend against classic interpolation
   blend_patches.png        a sphere zone blended C2 into a bicubic ring (blending paper)
+  blend_join.png           basic shape to basic shape: a cylinder into a spherical dome and
+                           two differently partitioned cones (Figs. 9-11)
   summary.txt              the measured figures
 """
 import math
@@ -168,7 +170,35 @@ def blended_sphere_zone(doc, out, lines):
     picture_of_blend(os.path.join(out, "blend_patches.png"), blended)
 
 
-def picture_of_blend(path, blended):
+def joined_basic_shapes(doc, out, lines):
+    """Basic shape to basic shape (blending paper, Figs. 9-11): a circular post under a
+    spherical dome, and two cones partitioned differently around their axis; each joined by
+    one C2 (6,5) transition row, both shapes kept exact."""
+    around = np.radians([0.0, 50.0, 95.0, 160.0, 215.0, 290.0, 360.0])
+    other = np.radians([10.0, 70.0, 100.0, 175.0, 240.0, 300.0, 370.0])
+    post = fw.shapes.Cylinder((16, 0, 0), 2.0, around, [0.0, 2.0, 4.0])
+    dome = fw.shapes.SphereZone((16, 0, 5.5), 2.0, around, np.radians([15.0, 50.0, 90.0]))
+    lower = fw.shapes.Cone((24, 0, 0), 2.5, 0.15, around, [0.0, 1.5, 3.0])
+    upper = fw.shapes.Cone((24, 0, 0), 3.6, -0.25, other, [4.5, 6.0, 7.5])
+    pictures = []
+    for name, (a, b) in (("PostAndDome", (post, dome)), ("TwoCones", (lower, upper))):
+        joined = fw.join_basic_shapes(a, b)
+        naive = fw.join_naive(a, b)
+        obj = doc.addObject("Part::Feature", name)
+        obj.Shape = joined.shell
+        roles = {}
+        for role, _ in joined.patches:
+            roles[role] = roles.get(role, 0) + 1
+        lines += ["", f"Basic shape to basic shape: {name}",
+                  f"  patches: {roles}, shell valid: {joined.shell.isValid()}, "
+                  f"single surface: {joined.surface.Continuity if joined.surface else None}, "
+                  f"naive join single surface: {naive.surface}"]
+        pictures.append(joined)
+    picture_of_blend(os.path.join(out, "blend_join.png"), *pictures,
+                     title="Cylinder into a dome, cone into cone: basic (blue), (6,5) transition (orange)")
+
+
+def picture_of_blend(path, *blends, title="Sphere zone (blue), (6,5) transition (orange), bicubic ring (green)"):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -176,13 +206,15 @@ def picture_of_blend(path, blended):
     FigureCanvasAgg(fig)
     ax = fig.add_subplot(1, 1, 1, projection="3d")
     colors = {"basic": "tab:blue", "transition": "tab:orange", "freeform": "tab:green"}
-    for role, surface in blended.patches:
-        u0, u1, v0, v1 = surface.bounds()
-        grid = np.array([[tuple(surface.value(u, v)) for v in np.linspace(v0, v1, 6)] for u in np.linspace(u0, u1, 6)])
-        ax.plot_surface(grid[..., 0], grid[..., 1], grid[..., 2], color=colors.get(role, "grey"), alpha=0.8,
-                        linewidth=0.2, edgecolor="k")
-    ax.set_title("Sphere zone (blue), (6,5) transition (orange), bicubic ring (green)")
-    ax.set_box_aspect((1, 1, 0.8))
+    for blended in blends:
+        for role, surface in blended.patches:
+            u0, u1, v0, v1 = surface.bounds()
+            grid = np.array([[tuple(surface.value(u, v)) for v in np.linspace(v0, v1, 6)]
+                             for u in np.linspace(u0, u1, 6)])
+            ax.plot_surface(grid[..., 0], grid[..., 1], grid[..., 2], color=colors.get(role, "grey"), alpha=0.8,
+                            linewidth=0.2, edgecolor="k")
+    ax.set_title(title)
+    ax.set_box_aspect((1, 1, 0.8) if len(blends) == 1 else (2, 1, 1))
     fig.tight_layout()
     fig.savefig(path)
 
@@ -229,6 +261,7 @@ def main():
     design_with_basic_curves(doc, out, lines)
     monotone_blend(doc, out, lines)
     blended_sphere_zone(doc, out, lines)
+    joined_basic_shapes(doc, out, lines)
     doc.recompute()
 
     path_doc = os.path.join(out, "fairsplines_demo.FCStd")
@@ -246,7 +279,7 @@ def main():
     with open(os.path.join(out, "summary.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png, monotone_curvature.png, blend_patches.png and summary.txt in {out}")
+    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png, monotone_curvature.png, blend_patches.png, blend_join.png and summary.txt in {out}")
     FreeCAD.closeDocument(doc.Name)
 
 
