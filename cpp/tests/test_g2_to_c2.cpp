@@ -240,6 +240,45 @@ TEST(Mixed, RhoOnUniformRunsSigmaElsewhereJoinC2) {
   EXPECT_LT((a.col(2) - b.col(2)).norm(), 1e-13);  // same weights (rotated points)
 }
 
+TEST(Mixed, SymmetricRunsGetRhoAndStayMirrorSymmetric) {
+  // Openings 0.9, | 0.5, 1.2, 0.5 |, 1.4, 0.7, ...: arcs 1-3 read the same both ways.
+  const Eigen::VectorXd theta = vec({0.0, 0.9, 1.4, 2.6, 3.1, 4.5, 5.2, 2 * kPi});
+  const G2CircleSpline circle = g2Circle(theta);
+  const std::vector<CircleReparam> choice = mixedChoice(circle);
+  const std::vector<CircleReparam> expected = {CircleReparam::Sigma, CircleReparam::Rho, CircleReparam::Rho,
+                                               CircleReparam::Rho, CircleReparam::Sigma, CircleReparam::Sigma,
+                                               CircleReparam::Sigma};
+  EXPECT_EQ(choice, expected);
+  // The centre arc (2, from 1.4 to 2.6) is parameterised mirror-symmetrically about its
+  // bisector with rho (Mixed), not with sigma alone: point at s vs mirror of point at 1 - s.
+  auto asymmetry = [&](CircleReparam method) {
+    const C2SexticSpline s = circleToC2(circle, method);
+    const Eigen::VectorXd t = s.knots();
+    const double t0 = t[s.firstPiece[2]], t1 = t[s.firstPiece[3]];
+    auto at = [&](double x) {
+      int k = s.firstPiece[2];
+      while (k + 1 < s.firstPiece[3] && x > t[k + 1]) ++k;
+      const double u = (x - t[k]) / (t[k + 1] - t[k]);
+      const double binom[7] = {1, 6, 15, 20, 15, 6, 1};
+      Eigen::RowVector3d p = Eigen::RowVector3d::Zero();
+      for (int i = 0; i <= 6; ++i) p += binom[i] * std::pow(u, i) * std::pow(1 - u, 6 - i) * s.bezier.row(7 * k + i);
+      return std::atan2(p[1] / p[2], p[0] / p[2]);
+    };
+    const double bisector = 2.0;
+    double worst = 0.0;
+    for (int k = 0; k <= 20; ++k) {
+      const double x = t0 + (t1 - t0) * k / 20.0, y = t1 - (t1 - t0) * k / 20.0;
+      worst = std::max(worst, std::abs((at(x) - bisector) + (at(y) - bisector)));
+    }
+    return worst;
+  };
+  EXPECT_LT(asymmetry(CircleReparam::Mixed), 1e-12);
+  EXPECT_GT(asymmetry(CircleReparam::Sigma), 1e-4);
+  const C2SexticSpline mixed = circleToC2(circle, CircleReparam::Mixed);
+  EXPECT_LT(c2Jump(mixed), 1e-11);
+  EXPECT_LT(offCircle(mixed), 1e-12);
+}
+
 TEST(Eq10, HermiteQuadraticsOfThePerturbedCubicStayC2InsideEachArc) {
   // A modified control structure (Fig. 4a): one inner point of an arc moved. Inside each
   // arc the rho pieces share Hermite quadratics at 1/3 and 2/3, so they join C2; the sextic

@@ -46,6 +46,14 @@ Eigen::VectorXd bernsteinProduct(const Eigen::VectorXd& a, const Eigen::VectorXd
 
 /// Throws InputError unless r = rbar / rlow has a positive denominator and increases on [0, 1]
 /// (checked on 65 samples: a reparameterization must be monotone, Section 3).
+/// The InputError of a map that is not monotone, with the arc it belongs to (the Mixed
+/// strategy then gives that arc sigma instead).
+struct NotMonotone : InputError {
+  NotMonotone(const std::string& what, int arc, bool rho) : InputError(what), arc(arc), rho(rho) {}
+  int arc;
+  bool rho;
+};
+
 void checkMonotone(const Reparam& r, const char* which, int arc) {
   double last = -1e300;
   for (int k = 0; k <= 64; ++k) {
@@ -56,8 +64,9 @@ void checkMonotone(const Reparam& r, const char* which, int arc) {
     if (!(den > 0) || !(num / den >= last - 1e-14) || !std::isfinite(num / den)) {
       std::ostringstream os;
       os << "the " << which << " reparameterization of arc " << arc
-         << " is not monotone; choose new continuity scalars closer to the shape's beta";
-      throw InputError(os.str());
+         << " is not monotone; choose new continuity scalars closer to the shape's beta"
+         << (std::string(which) == "rho" ? " (or the sigma or mixed method)" : "");
+      throw NotMonotone(os.str(), arc, std::string(which) == "rho");
     }
     last = num / den;
   }
@@ -388,28 +397,41 @@ C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vec
 std::vector<CircleReparam> mixedChoice(const G2CircleSpline& circle) {
   const int n = circle.pieces();
   auto same = [&](int i, int j) {
-    if (circle.closed) j = (j + n) % n;
-    if (j < 0 || j >= n) return false;
+    if (circle.closed) {
+      i = (i % n + n) % n;
+      j = (j % n + n) % n;
+    }
+    if (i < 0 || i >= n || j < 0 || j >= n) return false;
     return std::abs(circle.alpha[i] - circle.alpha[j]) <= 1e-12 * circle.alpha[i];
   };
-  std::vector<CircleReparam> choice(n);
-  for (int i = 0; i < n; ++i) {
-    // rho keeps uniform runs uniform (Section 3, "the best of the two approaches").
-    choice[i] = (same(i, i - 1) || same(i, i + 1)) ? CircleReparam::Rho : CircleReparam::Sigma;
+  // rho keeps uniform and symmetric runs so (Section 3, "the best of the two approaches"):
+  // an arc gets rho inside a window of at least two arcs whose openings read the same both
+  // ways (a palindrome: two equal neighbours are a uniform run, 0.5, 1.2, 0.5 a symmetric one).
+  std::vector<CircleReparam> choice(n, CircleReparam::Sigma);
+  auto mark = [&](int first, int last) {
+    for (int j = first; j <= last; ++j) choice[circle.closed ? (j % n + n) % n : j] = CircleReparam::Rho;
+  };
+  for (int c = 0; c < n; ++c) {
+    // Odd windows centred on arc c: c - m .. c + m.
+    int m = 0;
+    while (2 * (m + 1) + 1 <= n && same(c - m - 1, c + m + 1)) ++m;
+    if (m > 0) mark(c - m, c + m);
+    // Even windows centred between arcs c and c + 1: c - m .. c + 1 + m.
+    if (same(c, c + 1) && (circle.closed || c + 1 < n)) {
+      m = 0;
+      while (2 * (m + 1) + 2 <= n && same(c - m - 1, c + 1 + m + 1)) ++m;
+      mark(c - m, c + 1 + m);
+    }
   }
   return choice;
 }
 
-C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT) {
+namespace {
+
+/// Section 4.1 with a per-arc choice of rho or sigma (betaT checked by the caller).
+C2SexticSpline circleToC2With(const G2CircleSpline& circle, const std::vector<CircleReparam>& choice,
+                              const Eigen::VectorXd& betaT) {
   const int n = circle.pieces();
-  if (betaT.size() == 0) betaT = circle.beta;
-  if (betaT.size() != n) throw InputError("one continuity scalar per arc");
-  for (int i = 0; i < n; ++i) {
-    if (!(betaT[i] > 0) || !std::isfinite(betaT[i])) throw InputError("continuity scalars must be positive");
-  }
-  if (!circle.closed) betaT[0] = 1.0;
-  std::vector<CircleReparam> choice(n, method);
-  if (method == CircleReparam::Mixed) choice = mixedChoice(circle);
   auto wrap = [&](int i) { return circle.closed ? (i % n + n) % n : i; };
   auto isSigma = [&](int i) { i = wrap(i); return i >= 0 && i < n && choice[i] == CircleReparam::Sigma; };
 
@@ -499,6 +521,30 @@ C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Ei
     betaPieces[i] *= static_cast<double>(maps[left].size()) / static_cast<double>(maps[i].size());
   }
   return g2ToC2(cubic, maps, betaPieces, circle.closed);
+}
+
+}  // namespace
+
+C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT) {
+  const int n = circle.pieces();
+  if (betaT.size() == 0) betaT = circle.beta;
+  if (betaT.size() != n) throw InputError("one continuity scalar per arc");
+  for (int i = 0; i < n; ++i) {
+    if (!(betaT[i] > 0) || !std::isfinite(betaT[i])) throw InputError("continuity scalars must be positive");
+  }
+  if (!circle.closed) betaT[0] = 1.0;
+  if (method != CircleReparam::Mixed) return circleToC2With(circle, std::vector<CircleReparam>(n, method), betaT);
+  // Mixed: rho on the uniform or symmetric runs, unless new scalars betaT far from the
+  // circle's make an arc's rho map fold back; that arc then joins the sigma runs.
+  std::vector<CircleReparam> choice = mixedChoice(circle);
+  for (;;) {
+    try {
+      return circleToC2With(circle, choice, betaT);
+    } catch (const NotMonotone& e) {
+      if (!e.rho || e.arc < 0 || e.arc >= n || choice[e.arc] != CircleReparam::Rho) throw;
+      choice[e.arc] = CircleReparam::Sigma;
+    }
+  }
 }
 
 }  // namespace fairsplines

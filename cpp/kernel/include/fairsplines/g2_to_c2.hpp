@@ -84,14 +84,16 @@ struct C2SexticSpline {
 enum class CircleReparam { Rho, Sigma, Mixed };
 
 /// Per-arc choice of the Mixed strategy (Section 3, "the best of the two approaches"):
-/// rho where the arc has the opening of a neighbour (a uniform run), sigma elsewhere.
-/// (Mirror-symmetric runs are not detected yet: they get sigma.) A rho arc next to a sigma
-/// arc takes that end third from transitionMap (7.2), mirrored at its right end.
+/// rho on uniform or symmetric runs, i.e. on every window of two or more consecutive arcs
+/// whose openings read the same both ways (equal neighbours; or 0.5, 1.2, 0.5), sigma
+/// elsewhere. A rho arc next to a sigma arc takes that end third from transitionMap (7.2),
+/// mirrored at its right end.
 std::vector<CircleReparam> mixedChoice(const G2CircleSpline& circle);
 
 /// Section 4.1 for a circle partition: every arc's quadratic composed with rho (three
 /// pieces per arc; one where both end maps agree, as inside uniform runs with betaT = 1),
-/// sigma (one piece) or the mixed choice; betaT defaults (empty) to the
+/// sigma (one piece) or the mixed choice (mixedChoice; an arc whose rho map would not be
+/// monotone for the given betaT gets sigma instead); betaT defaults (empty) to the
 /// circle's beta (betaT[i] is arc to arc; piece to piece it is scaled by
 /// parts_{i-1} / parts_i, i.e. 1 inside a rho arc, 1/3 from a sigma arc to a rho arc and 3
 /// back). The circle stays exact; the result is C2 in homogeneous space.
