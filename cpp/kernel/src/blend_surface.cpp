@@ -458,15 +458,43 @@ RevolvedProfile atInterface(const RevolvedProfile& p, Interface at) {
   return out;
 }
 
-BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
-                           CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {
-  // Step 1: along the interface the G2 circle becomes the C2 sextic of 4.1 (betaT = beta,
-  // the heuristic of Section 3); the basic shape stays exact.
-  C2SexticSpline c2 = circleToC2(lon, method);
-  const Eigen::VectorXd T = arcKnots(c2);
-  const double scale = T[1] / (c2.knots()[c2.firstPiece[1]]);
+/// The basic side of a blend along u: one C2 sextic spline per control layer of the basic
+/// rows (layer J (dv + 1) + s holds Bézier index s in v of row J), all on the same pieces.
+struct BasicLayers {
+  std::vector<C2SexticSpline> layers;
+  int rows = 0, dv = 3;
+  Eigen::VectorXd knotsV;  ///< rows + 1 values
+  bool c2InV = false;
+};
+
+/// The layers of a shape of revolution: the C2 sextic circle times each profile point.
+BasicLayers revolvedLayers(const ShapeFrame& frame, const C2SexticSpline& c2, const RevolvedProfile& profile,
+                           bool sexticInV) {
+  BasicLayers basic;
+  const std::vector<Homogeneous3>& rows = sexticInV ? profile.sextic : profile.cubic;
+  basic.rows = static_cast<int>(rows.size());
+  basic.dv = sexticInV ? 6 : 3;
+  basic.knotsV = sexticInV ? profile.sexticKnots : Eigen::VectorXd::LinSpaced(basic.rows + 1, 0.0, basic.rows);
+  basic.c2InV = sexticInV;
+  for (int J = 0; J < basic.rows; ++J) {
+    for (int sv = 0; sv <= basic.dv; ++sv) {
+      C2SexticSpline layer = c2;
+      layer.bezier = revolveRows(frame, c2.bezier, Homogeneous3(rows[J].row(sv)));
+      basic.layers.push_back(std::move(layer));
+    }
+  }
+  return basic;
+}
+
+/// Section 4.2 from the basic side's layers (C2 along u): the ring (default, or a user's
+/// with its period mapped onto the circle's and the pieces split at its knots), then the
+/// patches and the (6,5) strip from three layers on each side.
+BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
+                           BasicLayers basic, Handle(Geom_BSplineSurface) ring) {
+  const C2SexticSpline& first = basic.layers.front();
+  const Eigen::VectorXd T = arcKnots(first);
   BlendComplex out;
-  out.knotsU = c2.knots() * scale;
+  out.knotsU = first.knots() * (T[1] / first.knots()[first.firstPiece[1]]);
   // A user ring: its u period mapped onto the circle's; where it has knots inside the
   // sextic's pieces, those pieces are split there (exactly, de Casteljau), and the ring gets
   // the sextic's knots: both sides then share one C2 parameterization without changing either.
@@ -479,33 +507,27 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
     const bool any = std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); });
     if (any) {
       const double period = out.knotsU[out.knotsU.size() - 1];
-      c2 = splitPieces(c2, cuts);
-      const Eigen::VectorXd t = c2.knots();
+      for (C2SexticSpline& layer : basic.layers) layer = splitPieces(layer, cuts);
+      const Eigen::VectorXd t = basic.layers.front().knots();
       out.knotsU = t * (period / t[t.size() - 1]);
     }
   }
   r = withKnots(r, out.knotsU);
-  out.piecesU = c2.pieces();
-  out.basicC2InV = sexticInV;
-  // Across the interface: the profile's G2 cubics as they are, or its C2 sextics.
-  const std::vector<Homogeneous3>& profiles = sexticInV ? profile.sextic : profile.cubic;
-  const Eigen::VectorXd basicKnotsV = sexticInV ? profile.sexticKnots
-                                                : Eigen::VectorXd::LinSpaced(profile.cubic.size() + 1, 0.0, profile.cubic.size());
-  const int dvBasic = sexticInV ? 6 : 3;
-  out.rowsBasic = static_cast<int>(profiles.size());
-  const int spansV = r->NbVKnots() - 1;
+  out.piecesU = basic.layers.front().pieces();
+  out.basicC2InV = basic.c2InV;
+  out.rowsBasic = basic.rows;
+  const int dvBasic = basic.dv, spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
   // Shared v parameterization: scalar 1 across both seams of the strip.
   out.knotsV.resize(out.rowsBasic + spansV + 2);
-  out.knotsV.head(out.rowsBasic + 1) = basicKnotsV;
-  const double stripLength = basicKnotsV[out.rowsBasic] - basicKnotsV[out.rowsBasic - 1];
-  out.knotsV[out.rowsBasic + 1] = basicKnotsV[out.rowsBasic] + stripLength;
+  out.knotsV.head(out.rowsBasic + 1) = basic.knotsV;
+  const double stripLength = basic.knotsV[out.rowsBasic] - basic.knotsV[out.rowsBasic - 1];
+  out.knotsV[out.rowsBasic + 1] = basic.knotsV[out.rowsBasic] + stripLength;
   for (int sp = 0; sp < spansV; ++sp) {
     out.knotsV[out.rowsBasic + 2 + sp] = out.knotsV[out.rowsBasic + 1 + sp] +
                                          stripLength * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
   }
   for (int k = 0; k < out.piecesU; ++k) {
-    const PointMatrix circle = c2.bezier.middleRows(7 * k, 7);
     Homogeneous4 top;
     for (int j = 0; j < out.rowsBasic; ++j) {
       TaggedPatch p;
@@ -514,21 +536,26 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
       p.degreeV = dvBasic;
       p.uPiece = k;
       p.vPiece = j;
-      p.bezier = revolveRows(frame, circle, profiles[j]);
+      p.bezier.resize(7 * (dvBasic + 1), 4);
+      for (int a = 0; a <= 6; ++a) {
+        for (int sv = 0; sv <= dvBasic; ++sv) {
+          p.bezier.row(a * (dvBasic + 1) + sv) = basic.layers[j * (dvBasic + 1) + sv].bezier.row(7 * k + a);
+        }
+      }
       if (j + 1 == out.rowsBasic) top = p.bezier;
       out.patches.push_back(std::move(p));
     }
     Homogeneous4 ringBottom;
-    for (int s = 0; s < spansV; ++s) {
+    for (int sp = 0; sp < spansV; ++sp) {
       int du = 0, dv = 0;
       TaggedPatch p;
       p.role = TaggedPatch::Role::FreeForm;
       p.uPiece = k;
-      p.vPiece = out.rowsBasic + 1 + s;
-      p.bezier = bezierOf(r, out.knotsU[k], out.knotsU[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
+      p.vPiece = out.rowsBasic + 1 + sp;
+      p.bezier = bezierOf(r, out.knotsU[k], out.knotsU[k + 1], r->VKnot(sp + 1), r->VKnot(sp + 2), du, dv);
       p.degreeU = du;
       p.degreeV = dv;
-      if (s == 0) ringBottom = raiseU(p.bezier, du, dv);
+      if (sp == 0) ringBottom = raiseU(p.bezier, du, dv);
       out.patches.push_back(std::move(p));
     }
     // Steps 2-3: three layers of Bézier coefficients on both sides, degree-raised to (6,5).
@@ -542,6 +569,14 @@ BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, c
     out.patches.push_back(std::move(strip));
   }
   return out;
+}
+
+BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
+                           CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {
+  // Step 1: along the interface the G2 circle becomes the C2 sextic of 4.1 (betaT = beta,
+  // the heuristic of Section 3); the basic shape stays exact.
+  const C2SexticSpline c2 = circleToC2(lon, method);
+  return assembleBlend(frame, lon, profile, revolvedLayers(frame, c2, profile, sexticInV), ring);
 }
 
 /// The naive baseline of Fig. 2a for a shape of revolution.

@@ -429,8 +429,8 @@ std::vector<CircleReparam> mixedChoice(const G2CircleSpline& circle) {
 namespace {
 
 /// Section 4.1 with a per-arc choice of rho or sigma (betaT checked by the caller).
-C2SexticSpline circleToC2With(const G2CircleSpline& circle, const std::vector<CircleReparam>& choice,
-                              const Eigen::VectorXd& betaT) {
+CircleMaps circleMapsWith(const G2CircleSpline& circle, const std::vector<CircleReparam>& choice,
+                          const Eigen::VectorXd& betaT) {
   const int n = circle.pieces();
   auto wrap = [&](int i) { return circle.closed ? (i % n + n) % n : i; };
   auto isSigma = [&](int i) { i = wrap(i); return i >= 0 && i < n && choice[i] == CircleReparam::Sigma; };
@@ -508,10 +508,6 @@ C2SexticSpline circleToC2With(const G2CircleSpline& circle, const std::vector<Ci
     for (const Reparam& r : rho) checkMonotone(r, "rho", i);
     maps[i] = {rho[0], rho[1], rho[2]};
   }
-  // The cubic pieces are the degree-raised conics, so every Hermite quadratic is the conic
-  // itself: g2ToC2 reproduces the circle exactly.
-  PointMatrix cubic(circle.cubic.rows(), 3);
-  for (Eigen::Index k = 0; k < cubic.rows(); ++k) cubic.row(k) = circle.cubic.row(k);
   // Piece to piece, the arc-to-arc scalar betaT is scaled by the pieces per arc:
   // parts_{i-1} / parts_i (1/3 from sigma to rho, 3 from rho to sigma).
   Eigen::VectorXd betaPieces = betaT;
@@ -520,12 +516,21 @@ C2SexticSpline circleToC2With(const G2CircleSpline& circle, const std::vector<Ci
     if (left < 0) continue;
     betaPieces[i] *= static_cast<double>(maps[left].size()) / static_cast<double>(maps[i].size());
   }
-  return g2ToC2(cubic, maps, betaPieces, circle.closed);
+  return CircleMaps{maps, betaPieces};
 }
 
 }  // namespace
 
 C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT) {
+  const CircleMaps m = circleMaps(circle, method, std::move(betaT));
+  // The cubic pieces are the degree-raised conics, so every Hermite quadratic is the conic
+  // itself: g2ToC2 reproduces the circle exactly.
+  PointMatrix cubic(circle.cubic.rows(), 3);
+  for (Eigen::Index k = 0; k < cubic.rows(); ++k) cubic.row(k) = circle.cubic.row(k);
+  return g2ToC2(cubic, m.maps, m.betaPieces, circle.closed);
+}
+
+CircleMaps circleMaps(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT) {
   const int n = circle.pieces();
   if (betaT.size() == 0) betaT = circle.beta;
   if (betaT.size() != n) throw InputError("one continuity scalar per arc");
@@ -533,13 +538,13 @@ C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Ei
     if (!(betaT[i] > 0) || !std::isfinite(betaT[i])) throw InputError("continuity scalars must be positive");
   }
   if (!circle.closed) betaT[0] = 1.0;
-  if (method != CircleReparam::Mixed) return circleToC2With(circle, std::vector<CircleReparam>(n, method), betaT);
+  if (method != CircleReparam::Mixed) return circleMapsWith(circle, std::vector<CircleReparam>(n, method), betaT);
   // Mixed: rho on the uniform or symmetric runs, unless new scalars betaT far from the
   // circle's make an arc's rho map fold back; that arc then joins the sigma runs.
   std::vector<CircleReparam> choice = mixedChoice(circle);
   for (;;) {
     try {
-      return circleToC2With(circle, choice, betaT);
+      return circleMapsWith(circle, choice, betaT);
     } catch (const NotMonotone& e) {
       if (!e.rho || e.arc < 0 || e.arc >= n || choice[e.arc] != CircleReparam::Rho) throw;
       choice[e.arc] = CircleReparam::Sigma;

@@ -101,6 +101,15 @@ std::vector<CircleReparam> mixedChoice(const G2CircleSpline& circle);
 /// end speed. Throws InputError for a non-monotone map or wrong betaT size.
 C2SexticSpline circleToC2(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT = {});
 
+/// The reparameterizations circleToC2 uses for a partition: per arc one map (sigma) or three
+/// (rho), and the piece-to-piece scalars. With g2ToC2 they convert any G2 cubic spline on
+/// that partition, e.g. an edited control structure (Fig. 4a).
+struct CircleMaps {
+  std::vector<std::vector<Reparam>> maps;
+  Eigen::VectorXd betaPieces;  ///< scalar at the start of each arc's first piece (g2ToC2's betaT)
+};
+CircleMaps circleMaps(const G2CircleSpline& circle, CircleReparam method, Eigen::VectorXd betaT = {});
+
 /// Section 4.1 for a general G2 rational cubic spline whose pieces are given in homogeneous
 /// form (4 rows per piece, any columns, last column the weight): piece i is composed with
 /// the maps `maps[i]` (one map: sigma-like, Hermite quadratics at 0 and 1; three maps:
