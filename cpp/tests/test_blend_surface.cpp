@@ -469,3 +469,62 @@ TEST(SphereBlend, DomeJoinsItsRingAtTheBottom) {
     EXPECT_LT(localOf(f, patchToOcct(p)->Value(0.5, 0.5)).z(), std::sin(0.3));
   }
 }
+
+// ---- An edited control structure (Figs. 1c/d, 4a) ----
+
+TEST(EditedBlend, UneditedStructureGivesTheShapesOwnBlend) {
+  const ShapeFrame f = tilted();
+  ShapeOfRevolution zone;
+  zone.frame = f;
+  zone.size0 = 1.5;
+  zone.around = nonUniformTurn();
+  zone.profile = vec({-0.6, 0.1, 0.5, 0.8});
+  for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma}) {
+    const BlendComplex edited = blendEdited(zone, sphereZone(f, 1.5, zone.around, zone.profile), method);
+    const BlendComplex plain = blendSphereZone(f, 1.5, zone.around, zone.profile, method);
+    ASSERT_EQ(edited.patches.size(), plain.patches.size());
+    double worst = 0.0;
+    for (size_t k = 0; k < plain.patches.size(); ++k) {
+      worst = std::max(worst, (edited.patches[k].bezier - plain.patches[k].bezier).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(worst, 1e-12);
+  }
+}
+
+TEST(EditedBlend, MovedControlPointIsJoinedC2AndArcsAwayFromItStayOnTheSphere) {
+  const ShapeFrame f = tilted();
+  ShapeOfRevolution zone;
+  zone.frame = f;
+  zone.size0 = 1.0;
+  zone.around = nonUniformTurn();
+  zone.profile = vec({-0.6, 0.1, 0.5, 0.8});
+  G2Surface g = sphereZone(f, 1.0, zone.around, zone.profile);
+  // Fig. 4a: one control point of arc 2 (an end point's neighbour, so the joins break) pushed out.
+  const auto h = g.point(2, 1, 1, 2);
+  const Eigen::Vector3d p = h.head<3>().transpose() / h[3];
+  g.setControl(2, 1, 1, 2, f.origin + 1.15 * (p - f.origin), h[3]);
+  const BlendComplex c = blendEdited(zone, g, CircleReparam::Rho);
+  const SeamReport r = seams(c);
+  EXPECT_LT(r.worst, 1e-8);
+  // Which u-pieces belong to which arc: the knots at the arcs (rho: three pieces an arc).
+  ASSERT_EQ(c.piecesU, 21);
+  double away = 0.0, edited = 0.0;
+  for (const TaggedPatch& patch : c.patches) {
+    if (patch.role != TaggedPatch::Role::Basic) continue;
+    const int arc = patch.uPiece / 3;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(patch);
+    for (int a = 0; a <= 8; ++a) {
+      for (int b = 0; b <= 8; ++b) {
+        const gp_Pnt q = s->Value(a / 8.0, b / 8.0);
+        const double d = std::abs((Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin).norm() - 1.0);
+        if (arc >= 1 && arc <= 3) edited = std::max(edited, d);
+        else away = std::max(away, d);
+      }
+    }
+  }
+  EXPECT_LT(away, 1e-10);
+  EXPECT_GT(edited, 1e-3);
+  EXPECT_THROW(singleSurface(c), InputError);  // rows are G2 across the profile
+  // A structure of another shape is refused.
+  EXPECT_THROW(blendEdited(zone, sphereZone(f, 1.0, uniformTurn(5), zone.profile)), InputError);
+}

@@ -750,6 +750,51 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
 
 }  // namespace
 
+BlendComplex blendEdited(const ShapeOfRevolution& shape, const G2Surface& edited, CircleReparam method,
+                         Handle(Geom_BSplineSurface) ring) {
+  const JoinSide side = joinSide(shape, method, Interface::End, "edited");
+  const int n = side.lon.pieces(), rows = static_cast<int>(side.profile.cubic.size());
+  if (edited.nu != n || edited.nv != rows || edited.bezier.rows() != 16 * n * rows) {
+    std::ostringstream os;
+    os << "the edited control structure has " << edited.nu << " x " << edited.nv << " patches; the shape has " << n
+       << " x " << rows;
+    throw InputError(os.str());
+  }
+  for (Eigen::Index k = 0; k < edited.bezier.rows(); ++k) {
+    if (!edited.bezier.row(k).allFinite() || !(edited.bezier(k, 3) > 0)) {
+      throw InputError("the edited control structure has a non-finite point or a non-positive weight");
+    }
+  }
+  // Section 4.1 on every control layer of the structure: the circle partition's maps (rho,
+  // sigma or mixed) compose the Hermite quadratics of each layer's cubic pieces (eqs. (9),
+  // (10)); eq. (11) then makes every arc-to-arc join C2 (it changes nothing where the join
+  // is already C2, i.e. away from the edits).
+  const CircleMaps maps = circleMaps(side.lon, method);
+  BasicLayers basic;
+  basic.rows = rows;
+  basic.dv = 3;
+  basic.knotsV = Eigen::VectorXd::LinSpaced(rows + 1, 0.0, rows);
+  for (int J = 0; J < rows; ++J) {
+    for (int sv = 0; sv <= 3; ++sv) {
+      PointMatrix cubic(4 * n, 4);
+      for (int I = 0; I < n; ++I) {
+        for (int r = 0; r < 4; ++r) cubic.row(4 * I + r) = edited.point(I, J, r, sv);
+      }
+      C2SexticSpline layer = g2ToC2(cubic, maps.maps, maps.betaPieces, true);
+      const int P = layer.pieces();
+      for (int i = 0; i < n; ++i) {
+        const int k = layer.firstPiece[i], left = (k + P - 1) % P;
+        PointMatrix a = layer.bezier.middleRows(7 * left, 7), b = layer.bezier.middleRows(7 * k, 7);
+        adjustC2(a, b, layer.beta[k]);
+        layer.bezier.middleRows(7 * left, 7) = a;
+        layer.bezier.middleRows(7 * k, 7) = b;
+      }
+      basic.layers.push_back(std::move(layer));
+    }
+  }
+  return assembleBlend(side.frame, side.lon, side.profile, std::move(basic), ring);
+}
+
 C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& parts) {
   const int n = static_cast<int>(c2.firstPiece.size()) - 1;
   if (static_cast<int>(parts.size()) != n) throw InputError("refineArcs needs one piece count per arc");

@@ -149,6 +149,17 @@ struct ShapeOfRevolution {
 BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b, CircleReparam method = CircleReparam::Rho,
                         bool sexticInV = true, bool naive = false);
 
+/// Section 4.2 for an edited control structure (Figs. 1c/d, 4a): `edited` is the shape's
+/// G2Surface (sphereZone, cylinder, cone, torus of the same angles) with control points and
+/// weights changed (G2Surface::setControl). Along u every control layer is converted with
+/// the circle partition's maps (Section 4.1) and every arc-to-arc join made C2 by eq. (11),
+/// which leaves the joins that are already C2 unchanged: unedited arcs not next to an edit
+/// stay on the shape. Across the profile the rows stay G2 cubics (no single C2 surface).
+/// The ring (default: the unedited shape's) joins at the end of the profile. Throws
+/// InputError for a structure of another size, non-finite points or weights <= 0.
+BlendComplex blendEdited(const ShapeOfRevolution& shape, const G2Surface& edited,
+                         CircleReparam method = CircleReparam::Rho, Handle(Geom_BSplineSurface) ring = nullptr);
+
 /// Splits arc i of a C2 sextic spline into parts[i] equal pieces (a multiple of the pieces it
 /// has) by de Casteljau: the curve and its C2 joins are unchanged; the scalars follow the new
 /// interval lengths. Throws InputError for a count that is not a multiple.
