@@ -102,8 +102,14 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     first row at the interface), or to a default ring that continues the shape, with a C2
     transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
     or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
-    start where the end is a pole)."""
+    start where the end is a pole). A shape edited with shape.set_control (Fig. 1c/d) is
+    joined as edited: C2 along the interface and across the strip, the rows across the
+    profile G2 (its .surface is then None)."""
     _check(shape, continuity, method)
+    if shape.edited:
+        if _interface(shape, at) != "end":
+            raise InputError("an edited control structure joins at the end of its profile")
+        return _result(_kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
     return _result(_complex(shape, freeform, method, False, _interface(shape, at)))
 
 
@@ -112,6 +118,8 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
     shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
     the partition's beta do not match: its .surface is None."""
     _check(shape, continuity, "rho")
+    if shape.edited:
+        raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
@@ -124,6 +132,8 @@ def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     beyond shape_a's end along the axis), else the strip folds back."""
     _check(shape_a, continuity, method)
     _check(shape_b, continuity, method)
+    if shape_a.edited or shape_b.edited:
+        raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
     return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 

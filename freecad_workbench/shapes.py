@@ -27,6 +27,7 @@ class _Shape:
     """A basic shape about an axis through `center` (frame: x_axis, axis)."""
 
     def __init__(self, center, axis, x_axis):
+        self._control = None  # the edited G2 control structure, once set_control was called
         self.center = _vector3(center, "center")
         self.axis = _vector3(axis, "axis")
         self.x_axis, self.y_axis = _frame(self.axis, x_axis)
@@ -48,10 +49,43 @@ class _Shape:
         nothing can be joined there."""
         return False
 
+    @property
+    def edited(self):
+        """True once a control point was changed with set_control."""
+        return self._control is not None
+
+    def control(self):
+        """The control structure in use: the edited one, or the shape's own (g2())."""
+        return self._control if self._control is not None else self.g2()
+
+    def control_point(self, i, j, r, s):
+        """(point, weight) of Bézier point b_rs of patch (i, j) (i around the axis, j along
+        the profile; r, s in 0..3) of the control structure in use."""
+        h = self.control().bezier[(i * self.control().nv + j) * 16 + 4 * r + s]
+        return tuple(h[:3] / h[3]), float(h[3])
+
+    def set_control(self, i, j, r, s, point, weight=None):
+        """Edit the control structure (the paper's Fig. 1c/d, 4a): move Bézier point b_rs of
+        patch (i, j) to `point`, optionally with a new positive weight. The patches then
+        leave the shape where edited; fw.blend_basic_shape joins the edited structure (C2
+        along the interface, arc joins next to an edit adjusted by eq. (11))."""
+        if self._control is None:
+            self._control = self.g2()
+        if weight is None:
+            weight = self.control_point(i, j, r, s)[1]
+        try:
+            self._control.set_control(int(i), int(j), int(r), int(s), _vector3(point, "point"), float(weight))
+        except (TypeError, IndexError) as exc:
+            raise InputError(f"set_control: {exc}") from None
+
+    def reset_control(self):
+        """Drop the edits: the exact shape again."""
+        self._control = None
+
     def patches(self):
-        """The shape's rational bicubic patches as Part.BSplineSurface objects, row by row
-        (u around the axis, v along the profile)."""
-        g2 = self.g2()
+        """The shape's rational bicubic patches (edited ones included) as Part.BSplineSurface
+        objects, row by row (u around the axis, v along the profile)."""
+        g2 = self.control()
         return [surface_to_part(g2.patch(i, j)) for i in range(g2.nu) for j in range(g2.nv)]
 
 

@@ -278,6 +278,12 @@ void bindBlend(py::module_& m) {
       "a"_a, "b"_a, "method"_a = "rho", "both_directions"_a = true, "naive"_a = false,
       "The end of a's profile joined to the start of b's (Figs. 9, 11, 12).");
   m.def(
+      "blend_edited",
+      [](const ShapeOfRevolution& shape, const G2Surface& edited, const std::string& method,
+         const std::optional<BSplineSurface>& ring) { return blendEdited(shape, edited, methodOf(method), ringOf(ring)); },
+      "shape"_a, "edited"_a, "method"_a = "rho", "ring"_a = py::none(),
+      "An edited G2 control structure of the shape blended into a ring (Figs. 1c/d).");
+  m.def(
       "ring_knots", [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
       "angles"_a, "method"_a = "rho", "The u knots (one period) a free-form ring must have to join a shape.");
 }

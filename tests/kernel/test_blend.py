@@ -208,3 +208,38 @@ def test_any_periodic_bicubic_ring_around_the_axis_blends_c2():
     reversed_ring.exchangeUV()  # no longer periodic in u
     with pytest.raises(fw.InputError, match="does not match the interface"):
         fw.blend_basic_shape(zone, freeform=reversed_ring)
+
+
+def test_edited_control_structure_blends_c2_along_the_interface():
+    # Fig. 1c/d, 4a: one control point of the sphere's G2 structure moved outwards.
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES, axis=AXIS)
+    plain = fw.blend_basic_shape(zone, method="sigma")
+    point, weight = zone.control_point(2, 2, 1, 2)
+    c = np.array(CENTER)
+    zone.set_control(2, 2, 1, 2, c + 1.2 * (np.array(point) - c))
+    assert zone.edited and zone.control_point(2, 2, 1, 2)[1] == weight
+    moved = max(abs((p - FreeCAD.Vector(*CENTER)).Length - 2.0) for s in zone.patches() for p in samples(s, 6))
+    assert moved > 1e-2  # the edited patch left the sphere
+    edited = fw.blend_basic_shape(zone, method="sigma")
+    assert edited.surface is None  # G2 across the profile
+    assert edited.shell.isValid()
+    knots = fw.freeform_knots(zone, "sigma")
+    assert _strip_jump(edited.patches, knots) < 1e-8
+    # basic patches of arcs away from the edit (sigma: one piece an arc) stay on the sphere,
+    # those of the edited arc do not
+    basic = [s for role, s in edited.patches if role == "basic"]
+    rows = len(LATITUDES) - 1
+    assert len(basic) == rows * (len(NON_UNIFORM) - 1) and plain.surface is not None
+
+    def off_sphere(arc):
+        return max(abs((p - FreeCAD.Vector(*CENTER)).Length - 2.0)
+                   for j in range(rows) for p in samples(basic[arc * rows + j], 6))
+
+    assert off_sphere(5) < 1e-10 and off_sphere(0) < 1e-10
+    assert off_sphere(2) > 1e-2
+    with pytest.raises(fw.InputError, match="unedited"):
+        fw.blend_naive(zone)
+    with pytest.raises(fw.InputError, match="positive weight"):
+        zone.set_control(0, 0, 1, 1, (0, 0, 0), weight=0.0)
+    zone.reset_control()
+    assert fw.blend_basic_shape(zone).surface.Continuity == "C2"
