@@ -12,7 +12,9 @@ the axis a full turn (the partition may be non-uniform), along the profile latit
 (sphere zone) or tube angles (torus); heights (cylinder, cone) are lengths. With `Uniform`
 on, the lists are generated from `AroundCount` arcs over the full turn and `ProfileCount`
 pieces from `ProfileStart` to `ProfileEnd`; off, the kind's lists are used as they are.
-`FreeForm` links a B-spline face to join instead of the default ring (bicubic, periodic
+`JoinTo` links another Blend basic shape to join instead of a ring (Figs. 9-12: the end
+of this profile to the start of that one's, with one C2 strip; hide the other object's own
+blend). `FreeForm` links a B-spline face to join instead of the default ring (bicubic, periodic
 around the axis, clamped along it: any knots, they are merged with the shape's); it moves
 with its object. `Interface` picks the end of the profile the free-form side joins (Auto:
 the end, or the start where the end is a pole, as for a dome). `Patches` counts the
@@ -103,6 +105,8 @@ _PROPERTIES = (
      "around the axis (in u), clamped along it, its first row near the interface", None, 0),
     ("App::PropertyEnumeration", "Interface", "Where the free-form side joins the profile: Auto (its end, or its "
      "start where the end is a pole), End or Start", "Auto", 0),
+    ("App::PropertyLink", "JoinTo", "Another Blend basic shape joined instead of a free-form ring (Figs. 9-12): "
+     "the end of this profile to the start of that one's, both kept exact; same number of arcs around", None, 0),
     ("App::PropertyBool", "Naive", "Build the naive blend of Fig. 2a instead (not C2), for comparison", False, 0),
     ("App::PropertyString", "Patches", "Number of patches per role (basic, transition, freeform)", "", 1),
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
@@ -116,7 +120,7 @@ class BlendShape(FeatureProxy):
     sewn shell."""
 
     Type = "BlendShape"
-    VERSION = 2  # 2: FreeForm, Interface
+    VERSION = 2  # 2: FreeForm, Interface, JoinTo
     GROUP = "Blend basic shape"
     PROPERTIES = _PROPERTIES
     ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES}
@@ -169,8 +173,9 @@ def angle_lists(obj):
     return list(getattr(obj, around)), list(getattr(obj, profile))
 
 
-def basic_shape(obj):
-    """The fw.shapes object of obj, about the Z axis through the origin (local coordinates)."""
+def basic_shape(obj, placement=None):
+    """The fw.shapes object of obj, about the Z axis through the origin (local coordinates),
+    or moved by `placement` (a FreeCAD.Placement)."""
     around_deg, profile = angle_lists(obj)
     if len(around_deg) < 2 or len(profile) < 2:
         raise InputError("each list needs at least 2 values")
@@ -185,14 +190,17 @@ def basic_shape(obj):
     around = [math.radians(a) for a in around_deg]
     if PROFILE_IN_DEGREES[obj.Kind]:
         profile = [math.radians(a) for a in profile]
-    center = (0.0, 0.0, 0.0)
+    placement = placement or FreeCAD.Placement()
+    frame = dict(axis=tuple(placement.Rotation.multVec(FreeCAD.Vector(0, 0, 1))),
+                 x_axis=tuple(placement.Rotation.multVec(FreeCAD.Vector(1, 0, 0))))
+    center = tuple(placement.Base)
     if obj.Kind == "Sphere zone":
-        return shapes.SphereZone(center, _length(obj.Radius), around, profile)
+        return shapes.SphereZone(center, _length(obj.Radius), around, profile, **frame)
     if obj.Kind == "Cylinder":
-        return shapes.Cylinder(center, _length(obj.Radius), around, profile)
+        return shapes.Cylinder(center, _length(obj.Radius), around, profile, **frame)
     if obj.Kind == "Cone":
-        return shapes.Cone(center, _length(obj.Radius0), float(obj.Slope), around, profile)
-    return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile)
+        return shapes.Cone(center, _length(obj.Radius0), float(obj.Slope), around, profile, **frame)
+    return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile, **frame)
 
 
 def freeform_surface(obj):
@@ -227,8 +235,21 @@ def freeform_surface(obj):
 
 
 def blend_result(obj):
-    """fw.BlendResult of obj (local coordinates): the C2 blend, or the naive one."""
+    """fw.BlendResult of obj (local coordinates): the C2 blend, or the naive one; joined to
+    another Blend basic shape where JoinTo is set."""
     shape = basic_shape(obj)
+    other = obj.JoinTo
+    if other is not None:
+        if not is_blend_shape(other):
+            raise InputError(f"JoinTo {other.Label} is not a Blend basic shape")
+        if other == obj or getattr(other, "JoinTo", None) == obj:
+            raise InputError(f"JoinTo {other.Label} joins back to this shape")
+        # the other shape in this object's local coordinates
+        relative = obj.Placement.inverse().multiply(other.Placement)
+        second = basic_shape(other, relative)
+        if obj.Naive:
+            return blend.join_naive(shape, second)
+        return blend.join_basic_shapes(shape, second, method=obj.Method)
     ring = freeform_surface(obj)
     at = None if obj.Interface == "Auto" else obj.Interface.lower()
     if obj.Naive:
@@ -241,14 +262,15 @@ def is_blend_shape(obj):
 
 
 def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, freeform=None,
-                     interface="Auto", **dimensions):
+                     interface="Auto", join_to=None, **dimensions):
     """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
     step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
     units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
     Uniform is given. freeform: a B-spline face to join, as (object, "FaceN") or an object
     with one face (None: the default ring); interface: "Auto", "End" or "Start". Bad
     dimensions leave the object with the message in its Status; unknown kinds, methods,
-    interfaces or dimensions raise InputError."""
+    interfaces or dimensions raise InputError. join_to: another Blend basic shape to join
+    (its basic shape instead of a ring; its own view is hidden in the GUI)."""
     if kind not in KINDS:
         raise InputError(f"unknown kind {kind!r}: use one of {', '.join(KINDS)}")
     if method not in METHODS:
@@ -261,6 +283,8 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         if not isinstance(source, FreeCAD.DocumentObject):
             raise InputError(f"freeform is not a document object: {source!r}")
         link = (source, [sub]) if sub else source
+    if join_to is not None and not is_blend_shape(join_to):
+        raise InputError(f"join_to is not a Blend basic shape: {join_to!r}")
     allowed = set(KIND_PROPERTIES[kind]) | {"Uniform"}
     unknown = sorted(set(dimensions) - allowed)
     if unknown:
@@ -277,6 +301,10 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         obj.Interface = interface
         if link is not None:
             obj.FreeForm = link
+        if join_to is not None:
+            obj.JoinTo = join_to
+            if FreeCAD.GuiUp:
+                join_to.ViewObject.Visibility = False
         for key, value in values.items():
             setattr(obj, key, [float(v) for v in value] if isinstance(value, (list, tuple)) else value)
         if placement is not None:

@@ -18,6 +18,7 @@ from ..features.blend_shape import (
     METHODS,
     PROFILE_IN_DEGREES,
     angle_lists,
+    is_blend_shape,
 )
 from ..errors import InputError
 from . import icon_path
@@ -169,7 +170,7 @@ class BlendShapePanel(LiveEditPanel):
         self.doc = obj.Document
         dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
         self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
-                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface"] + dimensions)
+                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface", "JoinTo"] + dimensions)
         self._updating = False
         self.widgets = {}
 
@@ -224,6 +225,15 @@ class BlendShapePanel(LiveEditPanel):
         buttons.addWidget(self.use_face)
         buttons.addWidget(self.default_ring)
         freeform_layout.addLayout(buttons)
+        join_row = QtWidgets.QFormLayout()
+        self.join_to = QtWidgets.QComboBox()
+        self.join_to.setToolTip(translate("FairSplines", "Join another Blend basic shape instead of a ring "
+                                                         "(Figs. 9-12): this profile's end to the start of its"))
+        self._join_choices = []
+        self._fill_join_choices()
+        self.join_to.currentIndexChanged.connect(lambda i: self.set_join_to(self._join_choices[i]))
+        join_row.addRow(translate("FairSplines", "Or join to"), self.join_to)
+        freeform_layout.addLayout(join_row)
         layout.addWidget(freeform_box)
         self.patches_label = QtWidgets.QLabel()
         layout.addWidget(self.patches_label)
@@ -364,6 +374,27 @@ class BlendShapePanel(LiveEditPanel):
             return
         self._apply([("FreeForm", link)])
 
+    def _fill_join_choices(self):
+        """(none) and every other Blend basic shape of the document."""
+        self._updating = True
+        try:
+            self._join_choices = [None] + [o for o in self.doc.Objects if is_blend_shape(o) and o != self.obj]
+            self.join_to.clear()
+            self.join_to.addItems([translate("FairSplines", "(a ring)")] + [o.Label for o in self._join_choices[1:]])
+            current = self.obj.JoinTo
+            self.join_to.setCurrentIndex(self._join_choices.index(current) if current in self._join_choices else 0)
+        finally:
+            self._updating = False
+
+    def set_join_to(self, other):
+        """Join the basic shape of `other` (a Blend basic shape), or a ring again (None); the
+        other object's own blend is hidden."""
+        if self._updating or other == self.obj.JoinTo:
+            return
+        self._apply([("JoinTo", other)])
+        if other is not None:
+            other.ViewObject.Visibility = False
+
     def use_selected_face(self):
         """The face selected in the 3D view (not one of this object's own) as the free-form side."""
         for sel in FreeCADGui.Selection.getSelectionEx(self.doc.Name):
@@ -391,7 +422,9 @@ class BlendShapePanel(LiveEditPanel):
     def refresh(self):
         self.patches_label.setText(translate("FairSplines", "Patches: {}").format(self.obj.Patches))
         link = self.obj.FreeForm
-        if link is None or link[0] is None:
+        if self.obj.JoinTo is not None:
+            self.freeform_label.setText(translate("FairSplines", "Joined to {}").format(self.obj.JoinTo.Label))
+        elif link is None or link[0] is None:
             self.freeform_label.setText(translate("FairSplines", "Default ring (continues the shape)"))
         else:
             subs = ", ".join(link[1]) if link[1] else ""

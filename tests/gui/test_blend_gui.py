@@ -262,3 +262,28 @@ def test_panel_takes_a_selected_bspline_face_as_the_free_form_side(scene, artifa
     panel.reject()
     gui().updateGui()
     assert blend.FreeForm is None
+
+
+def test_panel_joins_another_blend_shape_and_cancel_restores(scene, artifacts):
+    from freecad_workbench.features.blend_shape import make_blend_shape
+
+    doc = scene
+    dome = make_blend_shape(doc, "Sphere zone", name="Dome", Uniform=True, ProfileStart=15.0, ProfileEnd=90.0,
+                            ProfileCount=2, placement=FreeCAD.Placement(FreeCAD.Vector(0, 0, 22), FreeCAD.Rotation()))
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    panel.kind.setCurrentIndex(1)  # Cylinder
+    assert blend.Kind == "Cylinder" and blend.Status == "ok"
+    labels = [panel.join_to.itemText(i) for i in range(panel.join_to.count())]
+    assert labels[1:] == [dome.Label]
+    panel.join_to.setCurrentIndex(1)
+    assert blend.JoinTo == dome and blend.Status == "ok", blend.Status
+    assert blend.Patches.endswith("freeform 0") and not dome.ViewObject.Visibility
+    assert "Joined to" in panel.freeform_label.text()
+    gui().updateGui()
+    image = screenshot(doc, os.path.join(artifacts, "blend_join_post_dome_zebra.png"))
+    dark, white = stripe_pixels(image)
+    assert dark > 5000 and white > 5000, (dark, white)
+    panel.reject()
+    gui().updateGui()
+    assert blend.JoinTo is None and blend.Kind == "Sphere zone" and blend.Status == "ok"

@@ -251,3 +251,41 @@ def test_a_dome_joins_at_its_start(doc):
     obj.Interface = "End"
     doc.recompute()
     assert "pole" in obj.Status
+
+
+def test_join_to_another_blend_shape_joins_the_two_basic_shapes(doc, tmp_path):
+    # Figs. 9-10 in the document: a cylinder post, a spherical dome placed above it.
+    dome = make_blend_shape(doc, "Sphere zone", name="Dome", Radius=10.0, Uniform=True, ProfileStart=15.0,
+                            ProfileEnd=90.0, ProfileCount=2,
+                            placement=FreeCAD.Placement(FreeCAD.Vector(0, 0, 22), FreeCAD.Rotation()))
+    post = make_blend_shape(doc, "Cylinder", name="Post", Radius=10.0, join_to=dome)
+    assert post.Status == "ok", post.Status
+    assert post.Patches.endswith("freeform 0") and post.Shape.isValid()
+    # both shapes exact: the post's faces on its cylinder or on the dome's sphere
+    points = surface_points(post.Shape)
+    radial = np.hypot(points[:, 0], points[:, 1])
+    on_post = np.abs(radial - 10.0) < 1e-9
+    on_dome = np.abs(np.linalg.norm(points - (0, 0, 22), axis=1) - 10.0) < 1e-9
+    assert on_post.sum() > 100 and on_dome.sum() > 100
+    assert points[:, 2].max() > 31.9  # the dome's pole
+    expected = fw.join_basic_shapes(fw.shapes.Cylinder((0, 0, 0), 10.0, np.radians(np.linspace(0, 360, 7)),
+                                                       [0.0, 5.0, 10.0, 15.0]),
+                                    fw.shapes.SphereZone((0, 0, 22), 10.0, np.radians(np.linspace(0, 360, 7)),
+                                                         np.radians([15.0, 52.5, 90.0])))
+    np.testing.assert_allclose(points, surface_points(expected.shell), atol=1e-9)
+    # moving the dome recomputes the join
+    dome.Placement = FreeCAD.Placement(FreeCAD.Vector(0, 0, 25), FreeCAD.Rotation())
+    doc.recompute()
+    assert post.Status == "ok" and surface_points(post.Shape)[:, 2].max() > 34.9
+    # a join back is refused; clearing JoinTo gives the ring again
+    dome.JoinTo = post
+    doc.recompute()
+    assert "joins back" in post.Status or "joins back" in dome.Status
+    dome.JoinTo = None
+    post.JoinTo = None
+    doc.recompute()
+    assert post.Status == "ok" and "freeform 6" in post.Patches
+    other = make_blend_shape(doc, "Cone", name="Cone", AroundCount=4)
+    post.JoinTo = other
+    doc.recompute()
+    assert "same number of arcs" in post.Status
