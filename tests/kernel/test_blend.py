@@ -243,3 +243,53 @@ def test_edited_control_structure_blends_c2_along_the_interface():
         zone.set_control(0, 0, 1, 1, (0, 0, 0), weight=0.0)
     zone.reset_control()
     assert fw.blend_basic_shape(zone).surface.Continuity == "C2"
+
+
+def _conic_residual(q, p0, m, p2, c):
+    """|tau1^2 - 4 c^2 tau0 tau2| for the barycentric coordinates of q in the triangle
+    p0, m, p2: zero exactly on the rational quadratic (weights 1, c, 1) with those poles."""
+    a = np.array([[p0[0], m[0], p2[0]], [p0[1], m[1], p2[1]], [1.0, 1.0, 1.0]])
+    t0, t1, t2 = np.linalg.solve(a, [q[0], q[1], 1.0])
+    return abs(t1 * t1 - 4 * c * c * t0 * t2)
+
+
+def test_circular_and_hyperbolic_cylinder_ensemble_blends_c2():
+    # Fig. 9's ensemble as an edited structure: two arcs of a circular cylinder become
+    # hyperbolic (middle weight 1.4 > 1 instead of cos(alpha/2)); eq. (11) joins them C2 to
+    # the circular arcs, and the rho pieces in the middle of each arc keep their conic exact.
+    R = 3.0
+    angles = np.array([0.0, 1.0, 2.2, 3.1, 4.05, 5.3, 2 * math.pi])  # no uniform or symmetric run: rho in thirds
+    n = len(angles) - 1
+    cylinder = fw.shapes.Cylinder((0, 0, 0), R, angles, [0.0, 1.0, 2.0])
+    hyperbolic = {1: 1.4, 4: 1.4}
+
+    def poles(arc):
+        half = (angles[arc + 1] - angles[arc]) / 2
+        p0 = R * np.array([math.cos(angles[arc]), math.sin(angles[arc])])
+        p2 = R * np.array([math.cos(angles[arc + 1]), math.sin(angles[arc + 1])])
+        m = R / math.cos(half) * np.array([math.cos(angles[arc] + half), math.sin(angles[arc] + half)])
+        return p0, m, p2
+
+    for arc, c in hyperbolic.items():
+        p0, m, p2 = poles(arc)
+        for j in range(2):
+            for s in range(4):
+                for r, end in ((1, p0), (2, p2)):
+                    point, _ = cylinder.control_point(arc, j, r, s)
+                    xy = (end + 2 * c * m) / (1 + 2 * c)  # the degree-raised conic, as eq. (2), weight c
+                    cylinder.set_control(arc, j, r, s, (xy[0], xy[1], point[2]), (1 + 2 * c) / 3)
+    result = fw.blend_basic_shape(cylinder, method="rho")
+    assert result.shell.isValid()
+    arcs = fw.freeform_knots(cylinder, "rho")  # rho: each arc in three equal pieces (scalar 1 inside)
+    knots = np.r_[[a + (b - a) * t for a, b in zip(arcs[:-1], arcs[1:]) for t in (0, 1 / 3, 2 / 3)], arcs[-1]]
+    assert _strip_jump(result.patches, knots) < 1e-8
+    basic = [s for role, s in result.patches if role == "basic"]
+    rows = 2
+    assert len(basic) == 3 * n * rows  # rho: three pieces an arc
+    for arc in range(n):
+        points = list(samples(basic[(3 * arc + 1) * rows], 5))  # middle third of the arc, lower row
+        if arc in hyperbolic:
+            assert max(_conic_residual((p.x, p.y), *poles(arc), hyperbolic[arc]) for p in points) < 1e-10
+            assert max(abs(math.hypot(p.x, p.y) - R) for p in points) > 1e-3  # not the circle
+        else:  # circular arcs: the middle third stays exact (eq. (11) only moves the ends)
+            assert max(abs(math.hypot(p.x, p.y) - R) for p in points) < 1e-10
