@@ -31,7 +31,7 @@ _METHODS = ("rho", "sigma", "mixed")
 
 def _check(shape, continuity, method):
     if continuity == "C1":
-        raise NotImplementedError("the G1/C1 variant (Section 5, eta of Appendix 7.3) is not implemented yet")
+        raise NotImplementedError("the naive baseline has no C1 variant (Section 5 is blend_basic_shape(continuity='C1'))")
     if continuity != "C2":
         raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
     if method not in _METHODS:
@@ -61,9 +61,13 @@ def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
 
 
-def freeform_knots(shape, method="rho"):
+def freeform_knots(shape, method="rho", continuity="C2"):
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
-    arc knots of the C2 circle, intervals in the ratios beta of the longitudes."""
+    arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
+    "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
+    if continuity == "C1":
+        from .blend_c1 import freeform_knots_c1
+        return freeform_knots_c1(shape)
     _check(shape, "C2", method)
     return _kernel.ring_knots(shape.around, method)
 
@@ -87,7 +91,11 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho"):
     periodic-in-u, clamped-in-v Part.BSplineSurface with the knots of freeform_knots, its
     first row at the interface), or to a default ring that continues the shape, with a C2
     transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
-    or 'mixed' (Section 3)."""
+    or 'mixed' (Section 3). continuity "C1": Section 5, a biquadratic ring and a (4,2)
+    double strip (blend_c1.py; method unused)."""
+    if continuity == "C1":
+        from .blend_c1 import blend_basic_shape_c1
+        return blend_basic_shape_c1(shape, freeform)
     _check(shape, continuity, method)
     return _result(_complex(shape, freeform, method, False))
 
