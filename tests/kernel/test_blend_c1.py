@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import freecad_workbench as fw
+import freecad_workbench.blend_c1  # noqa: F401  (fw.blend_c1)
 import FreeCAD
 import Part
 from freecad_workbench.blend_c1 import complex_c1
@@ -175,3 +176,21 @@ def test_bad_c1_requests_raise_input_error():
         fw.blend_basic_shape(zone, freeform=uniform, continuity="C1")
     with pytest.raises(fw.InputError, match="continuity"):
         fw.blend_basic_shape(zone, continuity="G1")
+
+
+def test_new_scalars_beta_t_keep_the_blend_c1_and_the_sphere_exact():
+    # Appendix 7.3 with new scalars (all 1: uniform arc knots on a non-uniform partition).
+    shape, distance, size = SHAPES["sphere"]
+    beta_t = [1.0] * (len(NON_UNIFORM) - 1)
+    c = complex_c1(shape, beta_t=beta_t)
+    assert np.allclose(np.diff(list(c.knots_u)), 0.5)
+    assert np.allclose(list(fw.blend_c1.freeform_knots_c1(shape, beta_t)), range(len(NON_UNIFORM)))
+    assert max(c1_seams(c)) < 1e-8
+    result = fw.blend_c1.blend_basic_shape_c1(shape, beta_t=beta_t)
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs(distance(p)) for s in basic for p in samples(s)) < 1e-10 * size
+    assert result.surface.Continuity in C1_OR_BETTER
+    with pytest.raises(fw.InputError, match="multiply to 1"):
+        complex_c1(shape, beta_t=[1.1] * (len(NON_UNIFORM) - 1))
+    with pytest.raises(fw.InputError, match="one scalar per arc"):
+        complex_c1(shape, beta_t=[1.0, 1.0])
