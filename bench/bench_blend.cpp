@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bench_timing.hpp"
+#include "fairsplines/blend_c1.hpp"
 #include "fairsplines/blend_surface.hpp"
 
 using namespace fairsplines;
@@ -33,5 +34,17 @@ int main() {
   }
   const double naive = medianSeconds([&] { blendSphereZoneNaive(ShapeFrame{}, 1.0, nonUniform, latitudes); }, 200);
   std::printf("  %-20s %8.3f ms  (naive baseline, Fig. 2a)\n", "non-uniform, naive", 1e3 * naive);
+  // Section 5: the G1 biquadratic zone, eq. (12) around the axis, (4,2) double strip to a
+  // biquadratic ring; "(4,4)" converts the latitudes too (the single C1 surface exists).
+  for (const bool quarticInV : {false, true}) {
+    C1BlendOptions options;
+    options.quarticInV = quarticInV;
+    std::size_t patches = 0;
+    const double c1 = medianSeconds([&] {
+      patches = blendC1(g1SphereZone(ShapeFrame{}, 1.0, nonUniform, latitudes), nullptr, options).patches.size();
+    }, 200);
+    std::printf("  %-20s %8.3f ms  (%zu patches, C1 Section 5, basic %s)\n", "non-uniform, C1", 1e3 * c1, patches,
+                quarticInV ? "(4,4)" : "(4,2)");
+  }
   return 0;
 }

@@ -36,7 +36,7 @@ _METHODS = ("rho", "sigma", "mixed")
 
 def _check(shape, continuity, method):
     if continuity == "C1":
-        raise NotImplementedError("the G1/C1 variant (Section 5, eta of Appendix 7.3) is not implemented yet")
+        raise NotImplementedError("the naive baseline has no C1 variant (Section 5 is blend_basic_shape(continuity='C1'))")
     if continuity != "C2":
         raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
     if method not in _METHODS:
@@ -66,9 +66,13 @@ def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
 
 
-def freeform_knots(shape, method="rho"):
+def freeform_knots(shape, method="rho", continuity="C2"):
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
-    arc knots of the C2 circle, intervals in the ratios beta of the longitudes."""
+    arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
+    "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
+    if continuity == "C1":
+        from .blend_c1 import freeform_knots_c1
+        return freeform_knots_c1(shape)
     _check(shape, "C2", method)
     return _kernel.ring_knots(shape.around, method)
 
@@ -104,7 +108,14 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
     start where the end is a pole). A shape edited with shape.set_control (Fig. 1c/d) is
     joined as edited: C2 along the interface and across the strip, the rows across the
-    profile G2 (its .surface is then None)."""
+    profile G2 (its .surface is then None). continuity "C1": Section 5, a biquadratic ring
+    and a (4,2) double strip (blend_c1.py; method unused)."""
+    if continuity == "C1":
+        from .blend_c1 import blend_basic_shape_c1
+
+        if shape.edited or _interface(shape, at) != "end":
+            raise InputError("the C1 variant joins the unedited shape at the end of its profile")
+        return blend_basic_shape_c1(shape, freeform)
     _check(shape, continuity, method)
     if shape.edited:
         if _interface(shape, at) != "end":

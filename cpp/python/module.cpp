@@ -25,5 +25,6 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindCurves(m);
   fairsplines::python::bindDesign(m);
   fairsplines::python::bindBlend(m);
+  fairsplines::python::bindBlendC1(m);
   fairsplines::python::bindMonotone(m);
 }

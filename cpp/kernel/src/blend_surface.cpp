@@ -936,7 +936,7 @@ TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {
 
 Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance, int smoothness) {
   if (smoothness < 0) throw InputError("smoothness must be 0 or more");
-  const int rows = complex.rowsBasic + 1 + complex.rowsFreeForm, K = complex.piecesU;
+  const int rows = complex.rowsBasic + complex.rowsTransition + complex.rowsFreeForm, K = complex.piecesU;
   if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1) throw InputError("the complex has no shared knots");
   int d = 0, e = 0;
   for (const TaggedPatch& p : complex.patches) {

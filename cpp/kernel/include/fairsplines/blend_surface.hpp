@@ -35,6 +35,7 @@ struct BlendComplex {
   /// shape's top row, and the ring's first span that length again).
   Eigen::VectorXd knotsV;
   int piecesU = 0, rowsBasic = 0, rowsFreeForm = 0;
+  int rowsTransition = 1;   ///< transition rows between them: 1 (Section 4.2) or 2 (the double strip of Section 5)
   bool closedU = true;
   bool basicC2InV = false;  ///< basic rows converted to C2 sextics across the interface too
   int smoothness = 2;       ///< the continuity the complex is built for: 2 (Section 4.2) or 1 (Section 5)

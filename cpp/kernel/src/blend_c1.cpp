@@ -1,0 +1,402 @@
+#include "fairsplines/blend_c1.hpp"
+
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <cmath>
+#include <sstream>
+
+#include "fairsplines/blend_detail.hpp"
+#include "fairsplines/errors.hpp"
+#include "fairsplines/g1_to_c1.hpp"
+
+namespace fairsplines {
+
+using detail::bezierOf;
+using detail::revolveRows;
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+/// Increasing, finite angles whose arcs open less than pi (a rational quadratic arc needs
+/// its middle weight cos(alpha/2) > 0); the message names the offending arc.
+void checkArcs(const Eigen::VectorXd& angles, const char* what) {
+  if (angles.size() < 2) {
+    std::ostringstream os;
+    os << "the " << what << " partition needs at least two angles";
+    throw InputError(os.str());
+  }
+  for (Eigen::Index i = 0; i < angles.size(); ++i) {
+    if (!std::isfinite(angles[i])) throw InputError(std::string("non-finite ") + what + " angle");
+    if (i == 0) continue;
+    if (!(angles[i] > angles[i - 1])) {
+      std::ostringstream os;
+      os << what << " angles must increase: angle " << i << " is not greater than angle " << i - 1;
+      throw InputError(os.str());
+    }
+    if (angles[i] - angles[i - 1] >= kPi - 1e-12) {
+      std::ostringstream os;
+      os << what << " arc " << i - 1 << " (from " << angles[i - 1] << " to " << angles[i] << ") opens "
+         << angles[i] - angles[i - 1]
+         << ", pi or more: a rational quadratic arc must open less than pi (its weight cos(alpha/2) must be positive)";
+      throw InputError(os.str());
+    }
+  }
+}
+
+/// Eq. (12)'s arc-level knots: the first arc of length 1, then ratios betaT; the product of
+/// betaT over a closed turn must be 1 (else the closing join cannot have scalar betaT_0).
+Eigen::VectorXd arcKnotsC1(const Eigen::VectorXd& betaT, bool closed) {
+  const Eigen::Index n = betaT.size();
+  Eigen::VectorXd T(n + 1);
+  T[0] = 0.0;
+  double L = 1.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    if ((i > 0 || closed) && !(betaT[i] > 0 && std::isfinite(betaT[i]))) {
+      std::ostringstream os;
+      os << "betaT " << i << " (" << betaT[i] << ") must be positive";
+      throw InputError(os.str());
+    }
+    if (i > 0) L *= betaT[i];
+    T[i + 1] = T[i] + L;
+  }
+  if (closed && std::abs(L * betaT[0] - 1.0) > 1e-9) {
+    std::ostringstream os;
+    os << "the scalars betaT must multiply to 1 around the full turn (they give the knot-interval ratios), not "
+       << L * betaT[0];
+    throw InputError(os.str());
+  }
+  return T;
+}
+
+/// A circle profile: centre (rhoOffset, 0), radius r, partition `angles`, as rational
+/// quadratics (x, y, w) -> (rhoOffset w + r x, r y, w).
+void circleProfile(G1RevolvedShape& s, double rhoOffset, double r, const Eigen::VectorXd& angles, const char* what) {
+  checkArcs(angles, what);
+  PointMatrix q;
+  bool closed = false;
+  g1Circle(angles, q, s.profileBeta, closed);
+  if (closed) throw InputError("a closed profile circle has no boundary to blend at; give an open range of angles");
+  const int m = static_cast<int>(q.rows() / 3);
+  for (int j = 0; j < m; ++j) {
+    Homogeneous3 piece(3, 3);
+    for (int k = 0; k < 3; ++k) {
+      const auto h = q.row(3 * j + k);
+      piece.row(k) << rhoOffset * h[2] + r * h[0], r * h[1], h[2];
+    }
+    s.profile.push_back(piece);
+  }
+  s.profileKnots = Eigen::VectorXd::LinSpaced(m + 1, 0.0, m);
+  const double phi = angles[m];
+  s.end << rhoOffset + r * std::cos(phi), r * std::sin(phi);
+  s.tangent << -std::sin(phi), std::cos(phi);
+  s.size = r * (angles[m] - angles[m - 1]);
+}
+
+void aroundAxis(G1RevolvedShape& s, const ShapeFrame& frame, const Eigen::VectorXd& angles) {
+  frame.check();
+  s.frame = frame;
+  checkArcs(angles, "longitude");
+  s.theta = angles;
+  g1Circle(angles, s.circle, s.beta, s.closedU);
+}
+
+/// Checks the ring against the interface and returns it with the half-arc knots inserted.
+Handle(Geom_BSplineSurface) matchRingC1(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
+                                        const Eigen::VectorXd& cuts) {
+  const int n = static_cast<int>(T.size()) - 1;
+  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  if (ring.IsNull()) throw mismatch("no surface");
+  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (ring->UDegree() != 2 || ring->VDegree() != 2) throw mismatch("it must be biquadratic (degree 2 in u and v)");
+  if (ring->NbUKnots() != n + 1) {
+    std::ostringstream os;
+    os << "it needs " << n << " knot intervals in u (one per arc around the axis), not " << ring->NbUKnots() - 1;
+    throw mismatch(os.str());
+  }
+  const double period = T[n] - T[0];
+  for (int i = 0; i <= n; ++i) {
+    if (i < n && ring->UMultiplicity(i + 1) != 1) throw mismatch("its u knots must be simple (C1 in u)");
+    if (std::abs(ring->UKnot(i + 1) - T[i]) > 1e-9 * period) {
+      std::ostringstream os;
+      os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << T[i]
+         << " (knot intervals in the ratios betaT of the arcs, ringKnotsC1)";
+      throw mismatch(os.str());
+    }
+  }
+  if (ring->VMultiplicity(1) != 3) throw mismatch("it must be clamped in v (its first row is where the strip ends)");
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  for (Eigen::Index k = 0; k < cuts.size(); ++k) {
+    bool existing = false;
+    for (int i = 0; i <= n; ++i) existing = existing || std::abs(cuts[k] - T[i]) <= 1e-12 * period;
+    if (!existing) r->InsertUKnot(cuts[k], 1, 1e-12 * period);
+  }
+  return r;
+}
+
+/// Negative control: arc i split at its middle, each half degree-raised to a quartic (the
+/// identity map in the form of composeQuadratic2), no eta.
+PointMatrix splitAndRaise(const PointMatrix& quadratics) {
+  const int n = static_cast<int>(quadratics.rows() / 3);
+  PointMatrix out(10 * n, quadratics.cols());
+  Reparam2 left, right;
+  left << 0.0, 1.0, 0.25, 1.0, 0.5, 1.0;
+  right << 0.5, 1.0, 0.75, 1.0, 1.0, 1.0;
+  for (int i = 0; i < n; ++i) {
+    const PointMatrix q = quadratics.middleRows(3 * i, 3);
+    out.middleRows(10 * i, 5) = composeQuadratic2(q, left);
+    out.middleRows(10 * i + 5, 5) = composeQuadratic2(q, right);
+  }
+  return out;
+}
+
+}  // namespace
+
+TaggedPatch G1RevolvedShape::patch(int i, int j) const {
+  if (i < 0 || i >= piecesU() || j < 0 || j >= piecesV()) throw InputError("no such patch");
+  TaggedPatch p;
+  p.degreeU = 2;
+  p.degreeV = 2;
+  p.uPiece = i;
+  p.vPiece = j;
+  p.bezier = revolveRows(frame, circle.middleRows(3 * i, 3), profile[j]);
+  return p;
+}
+
+G1RevolvedShape g1SphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
+                             const Eigen::VectorXd& latitudes) {
+  if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
+    if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) throw InputError("latitudes must lie in [-pi/2, pi/2]");
+  }
+  G1RevolvedShape s;
+  aroundAxis(s, frame, longitudes);
+  circleProfile(s, 0.0, radius, latitudes, "latitude");
+  return s;
+}
+
+G1RevolvedShape g1Cone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
+                       const Eigen::VectorXd& heights) {
+  if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
+  G1RevolvedShape s;
+  aroundAxis(s, frame, angles);
+  const int m = static_cast<int>(heights.size()) - 1;
+  if (m < 1) throw InputError("a profile needs at least two heights");
+  for (int j = 0; j <= m; ++j) {
+    if (!std::isfinite(heights[j])) throw InputError("non-finite height");
+    if (j > 0 && !(heights[j] > heights[j - 1])) {
+      std::ostringstream os;
+      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
+      throw InputError(os.str());
+    }
+    if (!(radius0 + slope * heights[j] > 0)) {
+      std::ostringstream os;
+      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
+      throw InputError(os.str());
+    }
+  }
+  // Lines degree-raised to 2: C1 over the heights as they are (beta_j = h_j / h_{j-1}).
+  s.profileBeta = Eigen::VectorXd::Ones(m);
+  for (int j = 0; j < m; ++j) {
+    Homogeneous3 q(3, 3);
+    for (int k = 0; k < 3; ++k) {
+      const double z = heights[j] + (heights[j + 1] - heights[j]) * k / 2.0;
+      q.row(k) << radius0 + slope * z, z, 1.0;
+    }
+    s.profile.push_back(q);
+    if (j > 0) s.profileBeta[j] = (heights[j + 1] - heights[j]) / (heights[j] - heights[j - 1]);
+  }
+  s.profileIsLine = true;
+  s.profileKnots = heights.array() - heights[0];
+  s.end << radius0 + slope * heights[m], heights[m];
+  s.tangent = Eigen::Vector2d(slope, 1.0).normalized();
+  s.size = heights[m] - heights[m - 1];
+  return s;
+}
+
+G1RevolvedShape g1Torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
+                        const Eigen::VectorXd& anglesV) {
+  if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
+  G1RevolvedShape s;
+  aroundAxis(s, frame, anglesU);
+  circleProfile(s, R, r, anglesV, "tube");
+  return s;
+}
+
+Eigen::VectorXd ringKnotsC1(const Eigen::VectorXd& angles, const Eigen::VectorXd& betaT) {
+  checkArcs(angles, "longitude");
+  PointMatrix q;
+  Eigen::VectorXd beta;
+  bool closed = false;
+  g1Circle(angles, q, beta, closed);
+  if (!closed) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
+  if (betaT.size() != 0 && betaT.size() != beta.size()) throw InputError("betaT needs one scalar per arc");
+  return arcKnotsC1(betaT.size() ? betaT : beta, true);
+}
+
+Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Eigen::VectorXd& knotsU) {
+  const int n = shape.piecesU();
+  if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per arc around the axis, plus one");
+  const Eigen::Vector2d base = shape.end + shape.size / 2 * shape.tangent;
+  const double step = shape.size / 4;
+  const double scale = std::max(std::abs(shape.end.x()), std::abs(shape.end.y())) + shape.size;
+  if (!(base.x() > 0.05 * scale) || !(base.x() + 2 * step * shape.tangent.x() > 0.05 * scale)) {
+    throw InputError("the default ring would reach the axis: give a free-form net");
+  }
+  const ShapeFrame& f = shape.frame;
+  TColgp_Array2OfPnt poles(1, n, 1, 3);
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Vector2d rz = base + j * step * shape.tangent;
+    for (int i = 0; i < n; ++i) {
+      // The arc's tangent intersection (the quadratic circle's middle control point); OCCT's
+      // periodic span i is governed by poles i, i+1, i+2: arc i's pole is pole i + 1.
+      const double alpha = shape.theta[i + 1] - shape.theta[i], mid = shape.theta[i] + alpha / 2;
+      const double rho = rz.x() / std::cos(alpha / 2);
+      const Eigen::Vector3d q = f.origin + rho * (std::cos(mid) * f.x + std::sin(mid) * f.y) + rz.y() * f.z;
+      poles.SetValue((i + 1) % n + 1, j + 1, gp_Pnt(q.x(), q.y(), q.z()));
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, n + 1), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, n + 1), vMults(1, 2);
+  for (int k = 0; k <= n; ++k) {
+    uKnots.SetValue(k + 1, knotsU[k]);
+    uMults.SetValue(k + 1, 1);
+  }
+  vKnots.SetValue(1, 0.0);
+  vKnots.SetValue(2, 1.0);
+  vMults.Init(3);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 2, 2, true, false);
+}
+
+BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) ring, const C1BlendOptions& options) {
+  shape.frame.check();
+  const int n = shape.piecesU(), m = shape.piecesV();
+  if (n < 1 || m < 1) throw InputError("the shape has no patches");
+  if (!shape.closedU) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
+  if (!(shape.end.x() > 1e-9 * (std::abs(shape.end.y()) + shape.size))) {
+    throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
+  }
+  if (options.betaT.size() != 0 && options.betaT.size() != n) throw InputError("betaT needs one scalar per arc");
+  const Eigen::VectorXd betaT = options.betaT.size() ? options.betaT : shape.beta;
+  const Eigen::VectorXd T = arcKnotsC1(betaT, true);
+
+  // Step 1, eq. (12): every quadratic arc around the axis becomes two C1 quartics
+  // q^i∘eta^{i,0}, q^i∘eta^{i,1} (Appendix 7.3), exactly on the circle.
+  const PointMatrix quartics =
+      options.withoutEta ? splitAndRaise(shape.circle) : g1ToC1(shape.circle, shape.beta, betaT, true).bezier;
+  BlendComplex out;
+  out.smoothness = 1;
+  out.rowsTransition = 2;
+  out.closedU = true;
+  out.piecesU = 2 * n;
+  out.knotsU.resize(2 * n + 1);
+  for (int i = 0; i < n; ++i) {
+    out.knotsU[2 * i] = T[i];
+    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;  // the two quartics of an arc join with scalar 1
+  }
+  out.knotsU[2 * n] = T[n];
+
+  // Along the profile: the quadratics as they are, or (quarticInV, circles) eq. (12) too.
+  std::vector<Homogeneous3> rows;
+  Eigen::VectorXd basicKnotsV;
+  int dvBasic = 2;
+  if (options.quarticInV && !shape.profileIsLine) {
+    PointMatrix stacked(3 * m, 3);
+    for (int j = 0; j < m; ++j) stacked.middleRows(3 * j, 3) = shape.profile[j];
+    const C1QuarticSpline c1 = g1ToC1(stacked, shape.profileBeta, shape.profileBeta, false);
+    const Eigen::VectorXd Tv = arcKnotsC1(shape.profileBeta, false);
+    basicKnotsV.resize(2 * m + 1);
+    for (int j = 0; j < m; ++j) {
+      rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j, 5)));
+      rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j + 5, 5)));
+      basicKnotsV[2 * j] = Tv[j];
+      basicKnotsV[2 * j + 1] = (Tv[j] + Tv[j + 1]) / 2;
+    }
+    basicKnotsV[2 * m] = Tv[m];
+    dvBasic = 4;
+    out.basicC2InV = true;
+  } else {
+    rows = shape.profile;
+    basicKnotsV = shape.profileKnots;
+    out.basicC2InV = shape.profileIsLine;  // lines are C1 over the heights; circle arcs only G1
+  }
+  out.rowsBasic = static_cast<int>(rows.size());
+
+  // Step 2: the ring, with the half-arc knots, its patches raised to degree 4 in u.
+  if (ring.IsNull()) ring = defaultRingC1(shape, T);
+  const Handle(Geom_BSplineSurface) r = matchRingC1(ring, T, out.knotsU);
+  const int spansV = r->NbVKnots() - 1;
+  out.rowsFreeForm = spansV;
+
+  // Shared v parameterization: both strip rows as long as the top basic row, the ring's
+  // first span that length again (scalar 1 across all three seams of the double strip).
+  const double h = basicKnotsV[out.rowsBasic] - basicKnotsV[out.rowsBasic - 1];
+  out.knotsV.resize(out.rowsBasic + 2 + spansV + 1);
+  out.knotsV.head(out.rowsBasic + 1) = basicKnotsV;
+  out.knotsV[out.rowsBasic + 1] = basicKnotsV[out.rowsBasic] + h;
+  out.knotsV[out.rowsBasic + 2] = basicKnotsV[out.rowsBasic] + 2 * h;
+  for (int sp = 0; sp < spansV; ++sp) {
+    out.knotsV[out.rowsBasic + 3 + sp] = out.knotsV[out.rowsBasic + 2 + sp] +
+                                         h * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
+  }
+
+  for (int k = 0; k < out.piecesU; ++k) {
+    const PointMatrix circle = quartics.middleRows(5 * k, 5);
+    Homogeneous4 top;
+    for (int j = 0; j < out.rowsBasic; ++j) {
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::Basic;
+      p.degreeU = 4;
+      p.degreeV = dvBasic;
+      p.uPiece = k;
+      p.vPiece = j;
+      p.bezier = revolveRows(shape.frame, circle, rows[j]);
+      if (j + 1 == out.rowsBasic) top = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    TaggedPatch ringBottom;
+    for (int s = 0; s < spansV; ++s) {
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::FreeForm;
+      p.uPiece = k;
+      p.vPiece = out.rowsBasic + 2 + s;
+      p.bezier = bezierOf(r, out.knotsU[k], out.knotsU[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), p.degreeU, p.degreeV);
+      if (s == 0) ringBottom = raisePatch(p, 4, 2);
+      out.patches.push_back(std::move(p));
+    }
+    // Step 3 (Section 5): first-order Hermite data across the boundary, two layers per side,
+    // fill the double strip of degree (4,2); the centre line makes it C1 (equal intervals:
+    // the average of the two inner layers).
+    TaggedPatch lower, upper;
+    lower.role = upper.role = TaggedPatch::Role::Transition;
+    lower.degreeU = upper.degreeU = 4;
+    lower.degreeV = upper.degreeV = 2;
+    lower.uPiece = upper.uPiece = k;
+    lower.vPiece = out.rowsBasic;
+    upper.vPiece = out.rowsBasic + 1;
+    lower.bezier.resize(15, 4);
+    upper.bezier.resize(15, 4);
+    const int nb = dvBasic + 1;
+    for (int a = 0; a <= 4; ++a) {
+      // Basic side: b_0 its top row, b_1 with the same v-derivative over the same length:
+      // 2 (b_1 - b_0) = dvBasic (top_dv - top_{dv-1}).
+      const Eigen::RowVector4d b0 = top.row(a * nb + dvBasic);
+      const Eigen::RowVector4d b1 = b0 + dvBasic / 2.0 * (b0 - top.row(a * nb + dvBasic - 1));
+      // Ring side: c_2 its first row, c_1 mirrored (degree 2 on both sides, equal lengths).
+      const Eigen::RowVector4d c2 = ringBottom.bezier.row(a * 3), c1 = 2 * c2 - ringBottom.bezier.row(a * 3 + 1);
+      const Eigen::RowVector4d centre = (b1 + c1) / 2;
+      lower.bezier.row(a * 3) = b0;
+      lower.bezier.row(a * 3 + 1) = b1;
+      lower.bezier.row(a * 3 + 2) = centre;
+      upper.bezier.row(a * 3) = centre;
+      upper.bezier.row(a * 3 + 1) = c1;
+      upper.bezier.row(a * 3 + 2) = c2;
+    }
+    out.patches.push_back(std::move(lower));
+    out.patches.push_back(std::move(upper));
+  }
+  return out;
+}
+
+}  // namespace fairsplines

@@ -1,0 +1,365 @@
+// Section 5: G1 biquadratic basic shapes joined to biquadratic C1 NURBS by a (4,2) double
+// strip; judged by OCCT evaluation of the returned patches (D1 on both sides of every seam).
+#include <gtest/gtest.h>
+
+#include <BRepCheck_Analyzer.hxx>
+#include <GeomAbs_Shape.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "blend_test_support.hpp"
+#include "fairsplines/blend_c1.hpp"
+#include "fairsplines/errors.hpp"
+
+using namespace fairsplines;
+using namespace fairsplines::test::blend;
+
+namespace {
+
+struct C1Seams {
+  double alongU = 0.0;             ///< between neighbouring patches in u (closing seam included)
+  double basicTransition = 0.0;    ///< basic | lower strip row
+  double centre = 0.0;             ///< lower | upper strip row (the centre line)
+  double transitionFree = 0.0;     ///< upper strip row | ring
+  double insideV = 0.0;            ///< inside the ring, and inside the basic rows where they are C1 across
+  std::vector<double> alongURow;   ///< per row of the complex
+  double worst() const { return std::max({alongU, basicTransition, centre, transitionFree, insideV}); }
+};
+
+/// Position and first derivatives across every seam, OCCT D1 on both sides; derivatives
+/// scaled to the shared parameterization (across a seam: the ratio of the neighbouring knot
+/// intervals; along it: equal). Relative to the largest first derivative there. knotsU:
+/// the intervals the u-seams are judged with (default: the complex's).
+C1Seams c1Seams(const BlendComplex& c, const Eigen::VectorXd* knotsU = nullptr) {
+  const Eigen::VectorXd& ku = knotsU ? *knotsU : c.knotsU;
+  std::map<std::pair<int, int>, Handle(Geom_BSplineSurface)> at;
+  for (const TaggedPatch& p : c.patches) at[{p.uPiece, p.vPiece}] = patchToOcct(p);
+  const int rows = c.rowsBasic + c.rowsTransition + c.rowsFreeForm;
+  EXPECT_EQ(static_cast<int>(at.size()), rows * c.piecesU);
+  C1Seams report;
+  report.alongURow.assign(rows, 0.0);
+  auto compare = [](const Handle(Geom_BSplineSurface)& left, const Handle(Geom_BSplineSurface)& right, bool inU,
+                    double beta, double& bucket) {
+    for (int k = 0; k <= 16; ++k) {
+      const double t = k / 16.0;
+      gp_Pnt pl, pr;
+      gp_Vec lu, lv, ru, rv;  // lu, ru across the seam; lv, rv along it
+      if (inU) {
+        left->D1(1.0, t, pl, lu, lv);
+        right->D1(0.0, t, pr, ru, rv);
+      } else {
+        left->D1(t, 1.0, pl, lv, lu);
+        right->D1(t, 0.0, pr, rv, ru);
+      }
+      const double scale = std::max(lu.Magnitude(), lv.Magnitude());
+      const double jumps[3] = {pl.Distance(pr), (ru - beta * lu).Magnitude(), (rv - lv).Magnitude()};
+      for (double j : jumps) bucket = std::max(bucket, j / scale);
+    }
+  };
+  for (int k = 0; k < c.piecesU; ++k) {
+    const int kPrev = (k + c.piecesU - 1) % c.piecesU;
+    const double hPrev = ku[kPrev + 1] - ku[kPrev], h = ku[k + 1] - ku[k];
+    for (int v = 0; v < rows; ++v) {
+      compare(at.at({kPrev, v}), at.at({k, v}), true, h / hPrev, report.alongURow[v]);
+      report.alongU = std::max(report.alongU, report.alongURow[v]);
+      if (v == 0 || (v < c.rowsBasic && !c.basicC2InV)) continue;
+      const double beta = (c.knotsV[v + 1] - c.knotsV[v]) / (c.knotsV[v] - c.knotsV[v - 1]);
+      double& bucket = v == c.rowsBasic           ? report.basicTransition
+                       : v == c.rowsBasic + 1     ? report.centre
+                       : v == c.rowsBasic + 2     ? report.transitionFree
+                                                  : report.insideV;
+      compare(at.at({k, v - 1}), at.at({k, v}), false, beta, bucket);
+    }
+  }
+  return report;
+}
+
+Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
+  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
+  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
+}
+
+/// Largest |distance| over dense samples (17 x 17) of the given patches.
+template <class F>
+double offShape(const std::vector<Handle(Geom_BSplineSurface)>& patches, F distance) {
+  double worst = 0.0;
+  for (const auto& s : patches) {
+    for (int a = 0; a <= 16; ++a) {
+      for (int b = 0; b <= 16; ++b) worst = std::max(worst, std::abs(distance(s->Value(a / 16.0, b / 16.0))));
+    }
+  }
+  return worst;
+}
+
+std::vector<Handle(Geom_BSplineSurface)> basicOf(const BlendComplex& c) {
+  std::vector<Handle(Geom_BSplineSurface)> out;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role == TaggedPatch::Role::Basic) out.push_back(patchToOcct(p));
+  }
+  return out;
+}
+
+std::vector<Handle(Geom_BSplineSurface)> patchesOf(const G1RevolvedShape& s) {
+  std::vector<Handle(Geom_BSplineSurface)> out;
+  for (int i = 0; i < s.piecesU(); ++i) {
+    for (int j = 0; j < s.piecesV(); ++j) out.push_back(patchToOcct(s.patch(i, j)));
+  }
+  return out;
+}
+
+const Eigen::VectorXd kLatitudes = vec({-0.6, 0.1, 0.5, 0.8});
+const Eigen::VectorXd kTube = vec({-1.0, -0.2, 0.4, 0.9});
+const Eigen::VectorXd kHeights = vec({-1.0, 0.5, 0.7, 2.0});
+
+auto sphereDistance(const ShapeFrame& f, double R) {
+  return [&f, R](const gp_Pnt& q) { return localOf(f, q).norm() - R; };
+}
+auto coneDistance(const ShapeFrame& f, double r0, double slope) {
+  return [&f, r0, slope](const gp_Pnt& q) {
+    const auto l = localOf(f, q);
+    return (std::hypot(l.x(), l.y()) - (r0 + slope * l.z())) / std::sqrt(1 + slope * slope);
+  };
+}
+auto torusDistance(const ShapeFrame& f, double R, double r) {
+  return [&f, R, r](const gp_Pnt& q) {
+    const auto l = localOf(f, q);
+    return std::hypot(std::hypot(l.x(), l.y()) - R, l.z()) - r;
+  };
+}
+
+template <class Call>
+std::string inputErrorOf(Call call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no InputError)";
+}
+
+}  // namespace
+
+TEST(G1Revolved, BiquadraticPatchesLieExactlyOnSphereCylinderConeAndTorus) {
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape sphere = g1SphereZone(f, 2.0, nonUniformTurn(), vec({-kPi / 2, -0.6, 0.1, 0.5, kPi / 2}));
+  EXPECT_EQ(sphere.piecesU(), 7);
+  EXPECT_EQ(sphere.piecesV(), 4);
+  EXPECT_EQ(sphere.patch(0, 0).degreeU, 2);
+  EXPECT_EQ(sphere.patch(0, 0).degreeV, 2);
+  EXPECT_LT(offShape(patchesOf(sphere), sphereDistance(f, 2.0)), 1e-10 * 2.0);
+  for (double slope : {0.0, -0.3, 0.4}) {
+    const G1RevolvedShape cone = g1Cone(f, 2.0, slope, nonUniformTurn(), kHeights);
+    EXPECT_LT(offShape(patchesOf(cone), coneDistance(f, 2.0, slope)), 1e-10 * 4) << slope;
+  }
+  const G1RevolvedShape torus = g1Torus(f, 3.0, 1.0, nonUniformTurn(), kTube);
+  EXPECT_LT(offShape(patchesOf(torus), torusDistance(f, 3.0, 1.0)), 1e-10 * 4);
+}
+
+TEST(C1Blend, SphereZoneComplexIsC1AcrossEverySeamAndStaysExact) {
+  const ShapeFrame f = tilted();
+  const double R = 2.0;
+  const G1RevolvedShape zone = g1SphereZone(f, R, nonUniformTurn(), kLatitudes);
+  const BlendComplex c = blendC1(zone);
+  EXPECT_EQ(c.smoothness, 1);
+  EXPECT_EQ(c.piecesU, 14);  // two quartics per arc, eq. (12)
+  EXPECT_EQ(c.rowsBasic, 3);
+  EXPECT_EQ(c.rowsTransition, 2);
+  EXPECT_EQ(c.rowsFreeForm, 1);
+  EXPECT_EQ(static_cast<int>(c.patches.size()), 14 * (3 + 2 + 1));
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role == TaggedPatch::Role::Basic) {
+      EXPECT_EQ(p.degreeU, 4);
+      EXPECT_EQ(p.degreeV, 2);
+    } else if (p.role == TaggedPatch::Role::Transition) {
+      EXPECT_EQ(p.degreeU, 4);
+      EXPECT_EQ(p.degreeV, 2);
+    }
+  }
+  EXPECT_LT(offShape(basicOf(c), sphereDistance(f, R)), 1e-10 * R);
+  const C1Seams s = c1Seams(c);
+  EXPECT_LT(s.alongU, 1e-8);
+  EXPECT_LT(s.basicTransition, 1e-8);
+  EXPECT_LT(s.centre, 1e-8);
+  EXPECT_LT(s.transitionFree, 1e-8);
+}
+
+TEST(C1Blend, CylinderConeAndTorusComplexesAreC1AndStayExact) {
+  const ShapeFrame f = tilted();
+  for (double slope : {0.0, -0.3, 0.4}) {
+    const BlendComplex c = blendC1(g1Cone(f, 2.0, slope, nonUniformTurn(), kHeights));
+    EXPECT_TRUE(c.basicC2InV);  // lines are C1 over the heights
+    EXPECT_LT(offShape(basicOf(c), coneDistance(f, 2.0, slope)), 1e-10 * 4) << slope;
+    EXPECT_LT(c1Seams(c).worst(), 1e-8) << slope;
+    EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1) << slope;
+  }
+  for (bool both : {false, true}) {
+    C1BlendOptions o;
+    o.quarticInV = both;
+    const BlendComplex c = blendC1(g1Torus(f, 3.0, 1.0, nonUniformTurn(), kTube), nullptr, o);
+    EXPECT_LT(offShape(basicOf(c), torusDistance(f, 3.0, 1.0)), 1e-10 * 4) << both;
+    EXPECT_LT(c1Seams(c).worst(), 1e-8) << both;
+  }
+}
+
+TEST(C1Blend, BothDirectionsGiveOneC1SurfaceThatKeepsTheShape) {
+  const ShapeFrame f = tilted();
+  const double R = 1.5;
+  C1BlendOptions o;
+  o.quarticInV = true;
+  const BlendComplex c = blendC1(g1SphereZone(f, R, nonUniformTurn(), kLatitudes), nullptr, o);
+  ASSERT_TRUE(c.basicC2InV);
+  EXPECT_EQ(c.rowsBasic, 6);
+  EXPECT_LT(offShape(basicOf(c), sphereDistance(f, R)), 1e-10 * R);
+  const C1Seams s = c1Seams(c);
+  EXPECT_LT(s.worst(), 1e-8);
+  EXPECT_LT(s.insideV, 1e-8);
+  const Handle(Geom_BSplineSurface) single = singleSurface(c, 1e-9, 1);
+  EXPECT_GE(single->Continuity(), GeomAbs_C1);
+  EXPECT_EQ(single->UDegree(), 4);
+  EXPECT_EQ(single->VDegree(), 4);
+  double worst = 0.0;
+  for (int a = 0; a <= 60; ++a) {
+    for (int b = 0; b <= 30; ++b) {
+      const double u = c.knotsU[0] + (c.knotsU[c.piecesU] - c.knotsU[0]) * a / 60.0;
+      const double v = c.knotsV[0] + (c.knotsV[c.rowsBasic] - c.knotsV[0]) * b / 30.0;
+      worst = std::max(worst, std::abs(localOf(f, single->Value(u, v)).norm() - R));
+    }
+  }
+  EXPECT_LT(worst, 1e-9 * R);
+  o.quarticInV = true;
+  const BlendComplex torus = blendC1(g1Torus(f, 3.0, 1.0, nonUniformTurn(), kTube), nullptr, o);
+  EXPECT_GE(singleSurface(torus, 1e-9, 1)->Continuity(), GeomAbs_C1);
+  // Without the profile conversion the latitude arcs join only G1: no single C1 surface.
+  EXPECT_THROW(singleSurface(blendC1(g1SphereZone(f, R, nonUniformTurn(), kLatitudes)), 1e-9, 1), InputError);
+}
+
+TEST(C1Blend, EightByFourZoneWithItsRing) {
+  // The benchmark's configuration: 8 x 4 patches plus the default ring.
+  C1BlendOptions o;
+  o.quarticInV = true;
+  const BlendComplex c = blendC1(g1SphereZone(tilted(), 1.0, Eigen::VectorXd::LinSpaced(9, 0.0, 2 * kPi),
+                                              vec({-0.8, -0.3, 0.1, 0.5, 0.9})),
+                                 nullptr, o);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+}
+
+TEST(C1Blend, AnyNewScalarsBetaTThatCloseTheTurnGiveAC1Complex) {
+  // Appendix 7.3 with the derived numerators: betaT = 1 everywhere (uniform arc knots on a
+  // non-uniform partition) keeps the sphere exact and the complex C1.
+  const ShapeFrame f = tilted();
+  C1BlendOptions o;
+  o.betaT = Eigen::VectorXd::Ones(7);
+  const BlendComplex c = blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes), nullptr, o);
+  EXPECT_NEAR(c.knotsU[2] - c.knotsU[0], c.knotsU[4] - c.knotsU[2], 1e-12);
+  EXPECT_LT(offShape(basicOf(c), sphereDistance(f, 1.0)), 1e-10);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+}
+
+TEST(C1Blend, TheSeamCheckFailsWithoutEtaOrWithTheWrongBetaT) {
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape zone = g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes);
+  // Without the reparameterization eta: quadratic arcs split and degree-raised, same knots.
+  C1BlendOptions noEta;
+  noEta.withoutEta = true;
+  const BlendComplex naive = blendC1(zone, nullptr, noEta);
+  EXPECT_LT(offShape(basicOf(naive), sphereDistance(f, 1.0)), 1e-10);  // still on the sphere, and
+  const C1Seams bad = c1Seams(naive);
+  // its basic rows still join C1 after projection (the knots have the ratios beta); but in
+  // homogeneous space they join only G1 (the weight has a corner at every joint), so the
+  // strip, built from homogeneous layers, is not C1 along u,
+  EXPECT_LT(bad.alongURow[0], 1e-8);
+  EXPECT_GT(bad.alongURow[naive.rowsBasic], 1e-3);
+  EXPECT_GT(bad.alongURow[naive.rowsBasic + 1], 1e-3);
+  EXPECT_LT(bad.alongURow[naive.rowsBasic + 2], 1e-8);  // (the ring is)
+  // and no single C1 surface exists.
+  noEta.quarticInV = true;
+  EXPECT_THROW(singleSurface(blendC1(zone, nullptr, noEta), 1e-9, 1), InputError);
+  // The correct complex judged with the wrong betaT (uniform knots in place of betaT = beta).
+  const BlendComplex c = blendC1(zone);
+  const Eigen::VectorXd uniform = Eigen::VectorXd::LinSpaced(c.piecesU + 1, 0.0, c.piecesU);
+  EXPECT_GT(c1Seams(c, &uniform).alongU, 1e-3);
+  EXPECT_LT(c1Seams(c).alongU, 1e-8);
+}
+
+TEST(C1Blend, UserRingOnTheInterfaceKnotsIsKeptExactly) {
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape zone = g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes);
+  const Eigen::VectorXd T = ringKnotsC1(nonUniformTurn());
+  Handle(Geom_BSplineSurface) ring = defaultRingC1(zone, T);
+  // Make it free-form: move poles, add a second span in v.
+  ring->SetPole(3, 2, ring->Pole(3, 2).Translated(gp_Vec(0.1, -0.2, 0.15)));
+  ring->InsertVKnot(0.4, 1, 1e-12);
+  ring->SetPole(5, 3, ring->Pole(5, 3).Translated(gp_Vec(-0.1, 0.05, 0.1)));
+  const BlendComplex c = blendC1(zone, ring);
+  EXPECT_EQ(c.rowsFreeForm, 2);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  // Every free-form patch is the user's ring over its span.
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::FreeForm) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    const int span = p.vPiece - c.rowsBasic - 2;
+    for (int a = 0; a <= 6; ++a) {
+      for (int b = 0; b <= 6; ++b) {
+        const double u = c.knotsU[p.uPiece] + (c.knotsU[p.uPiece + 1] - c.knotsU[p.uPiece]) * a / 6.0;
+        const double v = ring->VKnot(span + 1) + (ring->VKnot(span + 2) - ring->VKnot(span + 1)) * b / 6.0;
+        worst = std::max(worst, s->Value(a / 6.0, b / 6.0).Distance(ring->Value(u, v)));
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(C1Blend, PatchesSewIntoOneValidShell) {
+  const BlendComplex c = blendC1(g1SphereZone(tilted(), 1.0, nonUniformTurn(), kLatitudes));
+  const TopoDS_Shape shell = sewnShell(c);
+  EXPECT_EQ(shell.ShapeType(), TopAbs_SHELL);
+  EXPECT_TRUE(BRepCheck_Analyzer(shell).IsValid());
+  int faces = 0;
+  for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) ++faces;
+  EXPECT_EQ(faces, static_cast<int>(c.patches.size()));
+}
+
+TEST(C1Blend, BadInputRaisesInputErrorNamingTheProblem) {
+  const ShapeFrame f = tilted();
+  auto has = [](const std::string& message, const std::string& part) {
+    return message.find(part) != std::string::npos;
+  };
+  // An arc of pi or more (arc 1 opens 3.5).
+  EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, 1.0, vec({0.0, 1.0, 4.5, 2 * kPi}), kLatitudes); }),
+                  "longitude arc 1"));
+  EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, 1.0, nonUniformTurn(), vec({-kPi / 2, kPi / 2})); }), "latitude arc 0"));
+  // Not a full turn.
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1Cone(f, 1.0, 0.0, vec({0.0, 1.0, 2.0}), kHeights)); }), "full turn"));
+  // The interface at a pole.
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), vec({0.0, kPi / 2}))); }),
+                  "pole"));
+  // Non-positive radii.
+  EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, -1.0, nonUniformTurn(), kLatitudes); }), "positive radius"));
+  EXPECT_TRUE(has(inputErrorOf([&] { g1Torus(f, 3.0, 0.0, nonUniformTurn(), kTube); }), "0 < r < R"));
+  EXPECT_TRUE(has(inputErrorOf([&] { g1Cone(f, 1.0, -1.0, nonUniformTurn(), kHeights); }), "is not positive"));
+  // A closed tube has no boundary.
+  EXPECT_TRUE(has(inputErrorOf([&] { g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})); }),
+                  "closed profile"));
+  // Rings that do not match the interface: uniform knots on a non-uniform partition; a
+  // bicubic net; a ring open in u.
+  const G1RevolvedShape zone = g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes);
+  const Handle(Geom_BSplineSurface) uniformRing = defaultRingC1(zone, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, uniformRing); }), "the free-form net does not match the interface: u knot"));
+  Handle(Geom_BSplineSurface) cubic = defaultRingC1(zone, ringKnotsC1(nonUniformTurn()));
+  cubic->IncreaseDegree(3, 3);
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, cubic); }), "biquadratic"));
+  Handle(Geom_BSplineSurface) open = defaultRingC1(zone, ringKnotsC1(nonUniformTurn()));
+  open->SetUNotPeriodic();
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, open); }), "periodic in u"));
+  // Scalars that do not close the turn.
+  C1BlendOptions o;
+  o.betaT = Eigen::VectorXd::Constant(7, 1.1);
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, nullptr, o); }), "multiply to 1"));
+}

@@ -1,0 +1,75 @@
+"""The G1/C1 variant of the blend (blending paper, Section 5, eta of Appendix 7.3):
+`fw.blend_basic_shape(shape, freeform, continuity="C1")` lands here.
+
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, longitudes, latitudes)
+    result = fw.blend_basic_shape(zone, continuity="C1")
+    result.surface.Continuity      # 'C1' (or better)
+    knots = fw.freeform_knots(zone, continuity="C1")   # u knots of a matching ring
+
+The basic shape is a G1 rational biquadratic spline (rational quadratic circle arcs, each
+below pi); around the axis every arc becomes two C1 quartics (eq. (12)), so the basic
+patches are of degree (4,2) ((4,4) here, the profile converted too, so that one C1 surface
+exists) and stay exactly on the shape. The free-form side is a biquadratic C1 ring:
+periodic in u on the knots of freeform_knots(shape, continuity="C1"), clamped in v, its
+first row where the transition ends. A double strip of degree (4,2) joins them C1.
+"""
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+from .kernel import surface_from_part
+from .shapes import Cone, Cylinder, SphereZone, Torus
+
+
+def _checked(shape):
+    if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
+        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
+    return shape
+
+
+def freeform_knots_c1(shape, beta_t=None):
+    """The u knots (one period) a biquadratic ring must have to join `shape` with C1: the
+    arc knots of eq. (12), intervals in the ratios beta = sin(alpha_i/2)/sin(alpha_{i-1}/2)
+    (or beta_t)."""
+    return _kernel.ring_knots_c1(_checked(shape).around, _beta_t(shape, beta_t))
+
+
+def _beta_t(shape, beta_t):
+    if beta_t is None:
+        return np.zeros(0)
+    try:
+        values = np.ascontiguousarray([float(b) for b in beta_t], dtype=float)
+    except (TypeError, ValueError):
+        raise InputError("beta_t must be a list of numbers, one per arc around the axis") from None
+    if values.size != len(shape.around) - 1:
+        raise InputError(f"beta_t needs one scalar per arc around the axis ({len(shape.around) - 1}), not {values.size}")
+    return values
+
+
+def complex_c1(shape, freeform=None, beta_t=None):
+    """The kernel's BlendComplex of Section 5 (smoothness 1) for `shape` and a biquadratic
+    Part.BSplineSurface ring (or None for the default ring). beta_t: new continuity scalars
+    around the axis (beta_t[i] between arcs i-1 and i, multiplying to 1), None for beta."""
+    _checked(shape)
+    frame = (shape.center, shape.x_axis, shape.y_axis)
+    ring = None if freeform is None else surface_from_part(freeform)
+    bt = _beta_t(shape, beta_t)
+    if isinstance(shape, SphereZone):
+        return _kernel.blend_sphere_zone_c1(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, bt)
+    if isinstance(shape, (Cylinder, Cone)):
+        radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
+        return _kernel.blend_cone_c1(*frame, radius0, slope, shape.angles, shape.heights, ring, bt)
+    return _kernel.blend_torus_c1(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, ring,
+                                  bt)
+
+
+def blend_basic_shape_c1(shape, freeform=None, beta_t=None):
+    """Section 5: `shape` joined at the end of its profile to a biquadratic C1 ring (or the
+    default one) by a C1 (4,2) double strip. Returns a BlendResult (patches, shell, surface).
+    beta_t as for complex_c1 (a user ring then needs freeform_knots_c1(shape, beta_t))."""
+    from .blend import _result
+
+    return _result(complex_c1(shape, freeform, beta_t))
+
+
+__all__ = ["blend_basic_shape_c1", "complex_c1", "freeform_knots_c1"]
