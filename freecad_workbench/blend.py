@@ -113,7 +113,7 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     if continuity == "C1":
         from .blend_c1 import blend_basic_shape_c1
 
-        if shape.edited or _interface(shape, at) != "end":
+        if shape.edited or at not in (None, "end"):
             raise InputError("the C1 variant joins the unedited shape at the end of its profile")
         return blend_basic_shape_c1(shape, freeform)
     _check(shape, continuity, method)
