@@ -363,3 +363,53 @@ TEST(C1Blend, BadInputRaisesInputErrorNamingTheProblem) {
   o.betaT = Eigen::VectorXd::Constant(7, 1.1);
   EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, nullptr, o); }), "multiply to 1"));
 }
+
+TEST(C1Join, TwoDifferentlyPartitionedToriJoinC1AndStayExact) {
+  // The C1 counterpart of Figs. 11-12: the same torus on both sides, partitioned differently
+  // around the axis (beta^a != beta^b) and across the tube.
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape a = g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({-1.4, -1.0, -0.3}));
+  const G1RevolvedShape b = g1Torus(f, 3.0, 1.0, vec({0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * kPi}),
+                                    vec({0.2, 0.5, 1.3, 1.6}));
+  const BlendComplex c = joinShapesC1(a, b);
+  EXPECT_EQ(c.smoothness, 1);
+  EXPECT_EQ(c.piecesU, 14);
+  const C1Seams seams = c1Seams(c);
+  EXPECT_LT(seams.worst(), 1e-8);
+  auto torus = [&](const gp_Pnt& q) {
+    const auto l = localOf(f, q);
+    return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
+  };
+  EXPECT_LT(offShape(basicOf(c), torus), 1e-10 * 4);
+  EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+  EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+  // Judged on uniform knots instead, the same complex fails: the check can fail.
+  const Eigen::VectorXd uniform = Eigen::VectorXd::LinSpaced(c.piecesU + 1, 0.0, c.piecesU);
+  EXPECT_GT(c1Seams(c, &uniform).alongU, 1e-3);
+}
+
+TEST(C1Join, CylinderIntoADomeAndBadInput) {
+  const ShapeFrame f = tilted();
+  ShapeFrame top = f;
+  top.origin = f.origin + 2.5 * f.z;
+  const G1RevolvedShape post = g1Cone(f, 1.0, 0.0, nonUniformTurn(), vec({0.0, 1.0, 1.8}));
+  const G1RevolvedShape dome = g1SphereZone(top, 1.0, nonUniformTurn(), vec({0.2, 0.9, kPi / 2}));
+  const BlendComplex c = joinShapesC1(post, dome);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::Basic) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int u = 0; u <= 8; ++u) {
+      for (int v = 0; v <= 8; ++v) {
+        const gp_Pnt q = s->Value(u / 8.0, v / 8.0);
+        const double d = p.vPiece < c.rowsBasic ? std::hypot(localOf(f, q).x(), localOf(f, q).y()) - 1.0
+                                                : localOf(top, q).norm() - 1.0;
+        worst = std::max(worst, std::abs(d));
+      }
+    }
+  }
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_THROW(joinShapesC1(dome, post), InputError);  // the dome's end is its pole
+  EXPECT_THROW(joinShapesC1(post, g1Cone(f, 1.0, 0.0, vec({0.0, 2.0, 4.0, 2 * kPi}), vec({2.0, 3.0}))), InputError);
+}

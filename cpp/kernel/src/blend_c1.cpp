@@ -151,6 +151,42 @@ PointMatrix splitAndRaise(const PointMatrix& quadratics) {
   return out;
 }
 
+/// The rows of a G1 shape along its profile: the quadratics as they are (lines are C1 over
+/// the heights, circle arcs only G1), or (quarticInV, circle profiles) the C1 quartics of
+/// eq. (12) along the profile too.
+struct ProfileRows {
+  std::vector<Homogeneous3> rows;
+  Eigen::VectorXd knots;
+  int degree = 2;
+  bool c1 = false;
+};
+
+ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
+  ProfileRows out;
+  const int m = shape.piecesV();
+  if (quarticInV && !shape.profileIsLine) {
+    PointMatrix stacked(3 * m, 3);
+    for (int j = 0; j < m; ++j) stacked.middleRows(3 * j, 3) = shape.profile[j];
+    const C1QuarticSpline c1 = g1ToC1(stacked, shape.profileBeta, shape.profileBeta, false);
+    const Eigen::VectorXd Tv = arcKnotsC1(shape.profileBeta, false);
+    out.knots.resize(2 * m + 1);
+    for (int j = 0; j < m; ++j) {
+      out.rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j, 5)));
+      out.rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j + 5, 5)));
+      out.knots[2 * j] = Tv[j];
+      out.knots[2 * j + 1] = (Tv[j] + Tv[j + 1]) / 2;
+    }
+    out.knots[2 * m] = Tv[m];
+    out.degree = 4;
+    out.c1 = true;
+  } else {
+    out.rows = shape.profile;
+    out.knots = shape.profileKnots;
+    out.c1 = shape.profileIsLine;
+  }
+  return out;
+}
+
 }  // namespace
 
 TaggedPatch G1RevolvedShape::patch(int i, int j) const {
@@ -298,29 +334,11 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   out.knotsU[2 * n] = T[n];
 
   // Along the profile: the quadratics as they are, or (quarticInV, circles) eq. (12) too.
-  std::vector<Homogeneous3> rows;
-  Eigen::VectorXd basicKnotsV;
-  int dvBasic = 2;
-  if (options.quarticInV && !shape.profileIsLine) {
-    PointMatrix stacked(3 * m, 3);
-    for (int j = 0; j < m; ++j) stacked.middleRows(3 * j, 3) = shape.profile[j];
-    const C1QuarticSpline c1 = g1ToC1(stacked, shape.profileBeta, shape.profileBeta, false);
-    const Eigen::VectorXd Tv = arcKnotsC1(shape.profileBeta, false);
-    basicKnotsV.resize(2 * m + 1);
-    for (int j = 0; j < m; ++j) {
-      rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j, 5)));
-      rows.push_back(Homogeneous3(c1.bezier.middleRows(10 * j + 5, 5)));
-      basicKnotsV[2 * j] = Tv[j];
-      basicKnotsV[2 * j + 1] = (Tv[j] + Tv[j + 1]) / 2;
-    }
-    basicKnotsV[2 * m] = Tv[m];
-    dvBasic = 4;
-    out.basicC2InV = true;
-  } else {
-    rows = shape.profile;
-    basicKnotsV = shape.profileKnots;
-    out.basicC2InV = shape.profileIsLine;  // lines are C1 over the heights; circle arcs only G1
-  }
+  const ProfileRows profile = profileRows(shape, options.quarticInV);
+  const std::vector<Homogeneous3>& rows = profile.rows;
+  const Eigen::VectorXd& basicKnotsV = profile.knots;
+  const int dvBasic = profile.degree;
+  out.basicC2InV = profile.c1;
   out.rowsBasic = static_cast<int>(rows.size());
 
   // Step 2: the ring, with the half-arc knots, its patches raised to degree 4 in u.
@@ -392,6 +410,118 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
       upper.bezier.row(a * 3) = centre;
       upper.bezier.row(a * 3 + 1) = c1;
       upper.bezier.row(a * 3 + 2) = c2;
+    }
+    out.patches.push_back(std::move(lower));
+    out.patches.push_back(std::move(upper));
+  }
+  return out;
+}
+
+G1RevolvedShape g1Shape(const ShapeOfRevolution& shape) {
+  switch (shape.kind) {
+    case ShapeOfRevolution::Kind::SphereZone:
+      return g1SphereZone(shape.frame, shape.size0, shape.around, shape.profile);
+    case ShapeOfRevolution::Kind::Cone:
+      return g1Cone(shape.frame, shape.size0, shape.size1, shape.around, shape.profile);
+    case ShapeOfRevolution::Kind::Torus:
+      break;
+  }
+  return g1Torus(shape.frame, shape.size0, shape.size1, shape.around, shape.profile);
+}
+
+BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bool quarticInV) {
+  a.frame.check();
+  b.frame.check();
+  const int n = a.piecesU();
+  if (!a.closedU || !b.closedU) {
+    throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
+  }
+  if (b.piecesU() != n) {
+    std::ostringstream os;
+    os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.piecesU() << ")";
+    throw InputError(os.str());
+  }
+  if (!(a.end.x() > 1e-9 * (std::abs(a.end.y()) + a.size))) {
+    throw InputError("the first shape's profile meets the axis (a pole) at the join");
+  }
+  const Homogeneous3& start = b.profile.front();
+  if (!(start(0, 0) / start(0, 2) > 1e-9 * (std::abs(start(0, 1) / start(0, 2)) + b.size))) {
+    throw InputError("the second shape's profile meets the axis (a pole) at the join");
+  }
+  // Averaged scalars across the transition (Fig. 11): betaT_i = sqrt(beta_i^a beta_i^b); their
+  // product around the turn is 1 as each side's is. Eq. (12) on both circles with these betaT
+  // gives both sides the same knots: two quartics of half the arc's interval each.
+  const Eigen::VectorXd betaT = (a.beta.array() * b.beta.array()).sqrt().matrix();
+  const Eigen::VectorXd T = arcKnotsC1(betaT, true);
+  const PointMatrix quarticsA = g1ToC1(a.circle, a.beta, betaT, true).bezier;
+  const PointMatrix quarticsB = g1ToC1(b.circle, b.beta, betaT, true).bezier;
+  BlendComplex out;
+  out.smoothness = 1;
+  out.rowsTransition = 2;
+  out.closedU = true;
+  out.piecesU = 2 * n;
+  out.knotsU.resize(2 * n + 1);
+  for (int i = 0; i < n; ++i) {
+    out.knotsU[2 * i] = T[i];
+    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;
+  }
+  out.knotsU[2 * n] = T[n];
+  const ProfileRows rowsA = profileRows(a, quarticInV), rowsB = profileRows(b, quarticInV);
+  out.basicC2InV = rowsA.c1 && rowsB.c1;
+  out.rowsBasic = static_cast<int>(rowsA.rows.size());
+  out.rowsFreeForm = static_cast<int>(rowsB.rows.size());
+  // Both strip rows and b's first row as long as a's last row (scalar 1 across three seams).
+  const double h = rowsA.knots[out.rowsBasic] - rowsA.knots[out.rowsBasic - 1];
+  out.knotsV.resize(out.rowsBasic + 2 + out.rowsFreeForm + 1);
+  out.knotsV.head(out.rowsBasic + 1) = rowsA.knots;
+  out.knotsV[out.rowsBasic + 1] = rowsA.knots[out.rowsBasic] + h;
+  out.knotsV[out.rowsBasic + 2] = rowsA.knots[out.rowsBasic] + 2 * h;
+  const double scaleB = h / (rowsB.knots[1] - rowsB.knots[0]);
+  for (int j = 1; j <= out.rowsFreeForm; ++j) {
+    out.knotsV[out.rowsBasic + 2 + j] = out.knotsV[out.rowsBasic + 2] + scaleB * (rowsB.knots[j] - rowsB.knots[0]);
+  }
+  const int da = rowsA.degree, db = rowsB.degree;
+  for (int k = 0; k < out.piecesU; ++k) {
+    Homogeneous4 top, bottom;
+    for (int side = 0; side < 2; ++side) {
+      const ProfileRows& rows = side == 0 ? rowsA : rowsB;
+      const PointMatrix circle = (side == 0 ? quarticsA : quarticsB).middleRows(5 * k, 5);
+      for (int j = 0; j < static_cast<int>(rows.rows.size()); ++j) {
+        TaggedPatch p;
+        p.degreeU = 4;
+        p.degreeV = rows.degree;
+        p.uPiece = k;
+        p.vPiece = side == 0 ? j : out.rowsBasic + 2 + j;
+        p.bezier = revolveRows(side == 0 ? a.frame : b.frame, circle, rows.rows[j]);
+        if (side == 0 && j + 1 == out.rowsBasic) top = p.bezier;
+        if (side == 1 && j == 0) bottom = p.bezier;
+        out.patches.push_back(std::move(p));
+      }
+    }
+    // Section 5: first-order Hermite data of both sides (two layers each) fill the double
+    // strip of degree (4,2); its centre line, the average of the inner layers, makes it C1.
+    TaggedPatch lower, upper;
+    lower.role = upper.role = TaggedPatch::Role::Transition;
+    lower.degreeU = upper.degreeU = 4;
+    lower.degreeV = upper.degreeV = 2;
+    lower.uPiece = upper.uPiece = k;
+    lower.vPiece = out.rowsBasic;
+    upper.vPiece = out.rowsBasic + 1;
+    lower.bezier.resize(15, 4);
+    upper.bezier.resize(15, 4);
+    for (int u = 0; u <= 4; ++u) {
+      // Same v-derivative over the same length: 2 (b_1 - b_0) = da (top_da - top_(da-1)).
+      const Eigen::RowVector4d b0 = top.row(u * (da + 1) + da);
+      const Eigen::RowVector4d b1 = b0 + da / 2.0 * (b0 - top.row(u * (da + 1) + da - 1));
+      const Eigen::RowVector4d c2 = bottom.row(u * (db + 1));
+      const Eigen::RowVector4d c1 = c2 - db / 2.0 * (bottom.row(u * (db + 1) + 1) - c2);
+      const Eigen::RowVector4d centre = (b1 + c1) / 2;
+      lower.bezier.row(u * 3) = b0;
+      lower.bezier.row(u * 3 + 1) = b1;
+      lower.bezier.row(u * 3 + 2) = centre;
+      upper.bezier.row(u * 3) = centre;
+      upper.bezier.row(u * 3 + 1) = c1;
+      upper.bezier.row(u * 3 + 2) = c2;
     }
     out.patches.push_back(std::move(lower));
     out.patches.push_back(std::move(upper));

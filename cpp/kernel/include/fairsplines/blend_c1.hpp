@@ -97,4 +97,16 @@ Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Ei
 BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) ring = nullptr,
                      const C1BlendOptions& options = C1BlendOptions());
 
+/// The G1 biquadratic form of a shape of revolution described for the joins.
+G1RevolvedShape g1Shape(const ShapeOfRevolution& shape);
+
+/// Section 5 for basic shape to basic shape (the C1 counterpart of joinShapes): the end of
+/// a's profile joined to the start of b's by a (4,2) double strip; both circles converted by
+/// eq. (12) with the averaged scalars betaT_i = sqrt(beta_i^a beta_i^b), so both sides share
+/// their knots (two quartics an arc). quarticInV: both profiles converted too (C1 across
+/// them, one C1 surface). b's patches are tagged Basic and follow the two strip rows
+/// (rowsFreeForm counts them). Throws InputError for different arc counts, partial turns or
+/// an interface on the axis.
+BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bool quarticInV = true);
+
 }  // namespace fairsplines
