@@ -35,9 +35,7 @@ _METHODS = ("rho", "sigma", "mixed")
 
 
 def _check(shape, continuity, method):
-    if continuity == "C1":
-        raise NotImplementedError("the naive baseline has no C1 variant (Section 5 is blend_basic_shape(continuity='C1'))")
-    if continuity != "C2":
+    if continuity not in ("C2", "C1"):
         raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
     if method not in _METHODS:
         raise InputError(f"method must be one of {_METHODS}, not {method!r}")
@@ -127,10 +125,15 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
 def blend_naive(shape, freeform=None, continuity="C2", at=None):
     """The naive baseline of Fig. 2a: direct second-order Hermite interpolation of the G2
     shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
-    the partition's beta do not match: its .surface is None."""
+    the partition's beta do not match: its .surface is None. continuity "C1": the G1
+    shape's arcs split and degree-raised without eta, the same (4,2) double strip."""
     _check(shape, continuity, "rho")
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
+    if continuity == "C1":
+        from .blend_c1 import blend_naive_c1
+
+        return blend_naive_c1(shape, freeform)
     return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
@@ -145,6 +148,8 @@ def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     _check(shape_b, continuity, method)
     if shape_a.edited or shape_b.edited:
         raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
+    if continuity == "C1":
+        return _result(_kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
     return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 

@@ -46,21 +46,14 @@ def _beta_t(shape, beta_t):
     return values
 
 
-def complex_c1(shape, freeform=None, beta_t=None):
+def complex_c1(shape, freeform=None, beta_t=None, naive=False):
     """The kernel's BlendComplex of Section 5 (smoothness 1) for `shape` and a biquadratic
     Part.BSplineSurface ring (or None for the default ring). beta_t: new continuity scalars
-    around the axis (beta_t[i] between arcs i-1 and i, multiplying to 1), None for beta."""
+    around the axis (beta_t[i] between arcs i-1 and i, multiplying to 1), None for beta.
+    naive: the arcs only split and degree-raised, without eta (the baseline; not C1)."""
     _checked(shape)
-    frame = (shape.center, shape.x_axis, shape.y_axis)
     ring = None if freeform is None else surface_from_part(freeform)
-    bt = _beta_t(shape, beta_t)
-    if isinstance(shape, SphereZone):
-        return _kernel.blend_sphere_zone_c1(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, bt)
-    if isinstance(shape, (Cylinder, Cone)):
-        radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
-        return _kernel.blend_cone_c1(*frame, radius0, slope, shape.angles, shape.heights, ring, bt)
-    return _kernel.blend_torus_c1(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, ring,
-                                  bt)
+    return _kernel.blend_c1(shape._revolution(), ring, _beta_t(shape, beta_t), True, naive)
 
 
 def blend_basic_shape_c1(shape, freeform=None, beta_t=None):
@@ -72,4 +65,13 @@ def blend_basic_shape_c1(shape, freeform=None, beta_t=None):
     return _result(complex_c1(shape, freeform, beta_t))
 
 
-__all__ = ["blend_basic_shape_c1", "complex_c1", "freeform_knots_c1"]
+def blend_naive_c1(shape, freeform=None):
+    """The C1 baseline: the G1 shape's arcs split at their middle and degree-raised to 4
+    without the eta reparameterization, the same (4,2) double strip. Its seams along the
+    strip are not C1 in homogeneous space, so it has no single C1 surface (.surface None)."""
+    from .blend import _result
+
+    return _result(complex_c1(shape, freeform, None, naive=True), single=False)
+
+
+__all__ = ["blend_basic_shape_c1", "blend_naive_c1", "complex_c1", "freeform_knots_c1"]

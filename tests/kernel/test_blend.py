@@ -136,8 +136,6 @@ def test_every_shape_blends_c2_and_naive_does_not(shape):
 
 def test_bad_blend_requests():
     zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES)
-    with pytest.raises(NotImplementedError, match="C1"):
-        fw.blend_naive(zone, continuity="C1")
     with pytest.raises(fw.InputError, match="continuity"):
         fw.blend_basic_shape(zone, continuity="G7")
     with pytest.raises(fw.InputError, match="full turn"):

@@ -194,3 +194,28 @@ def test_new_scalars_beta_t_keep_the_blend_c1_and_the_sphere_exact():
         complex_c1(shape, beta_t=[1.1] * (len(NON_UNIFORM) - 1))
     with pytest.raises(fw.InputError, match="one scalar per arc"):
         complex_c1(shape, beta_t=[1.0, 1.0])
+
+
+def test_naive_c1_baseline_fails_the_seam_check_the_c1_blend_passes():
+    # Without eta (Appendix 7.3) the arcs are only split and raised: the double strip is not
+    # C1 along u on a non-uniform partition, and no single C1 surface exists.
+    shape = SHAPES["sphere"][0]
+    naive = fw.blend_naive(shape, continuity="C1")
+    assert naive.surface is None and naive.shell.isValid()
+    along, _ = c1_seams(complex_c1(shape, naive=True))
+    assert along > 1e-3
+    assert c1_seams(complex_c1(shape))[0] < 1e-8
+
+
+def test_c1_join_of_two_differently_partitioned_tori():
+    other = [0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * math.pi]
+    a = fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, [-1.4, -1.0, -0.3], axis=AXIS)
+    b = fw.shapes.Torus(CENTER, 3.0, 1.0, other, [0.2, 0.5, 1.3, 1.6], axis=AXIS)
+    result = fw.join_basic_shapes(a, b, continuity="C1")
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs(SHAPES["torus"][1](p)) for s in basic for p in samples(s, 5)) < 1e-9
+    assert [s.UDegree for role, s in result.patches if role == "transition"] == [4] * 28
+    assert result.surface.Continuity in C1_OR_BETTER
+    assert result.shell.isValid()
+    along, across = c1_seams(fw._kernel.join_shapes_c1(a._revolution(), b._revolution()))
+    assert along < 1e-8 and across < 1e-8
