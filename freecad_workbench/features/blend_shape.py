@@ -14,7 +14,9 @@ on, the lists are generated from `AroundCount` arcs over the full turn and `Prof
 pieces from `ProfileStart` to `ProfileEnd`; off, the kind's lists are used as they are.
 `JoinTo` links another Blend basic shape to join instead of a ring (Figs. 9-12: the end
 of this profile to the start of that one's, with one C2 strip; hide the other object's own
-blend). `FreeForm` links a B-spline face to join instead of the default ring (bicubic, periodic
+blend). `Continuity` C1 builds Section 5 instead: the shape as a G1 biquadratic spline (arcs below
+180°), a (4,2) double strip, a biquadratic ring. `FreeForm` links a B-spline face to join
+instead of the default ring (bicubic, periodic
 around the axis, clamped along it: any knots, they are merged with the shape's); it moves
 with its object. `Interface` picks the end of the profile the free-form side joins (Auto:
 the end, or the start where the end is a pole, as for a dome). `Patches` counts the
@@ -35,6 +37,7 @@ from .undo import undo_step
 KINDS = ("Sphere zone", "Cylinder", "Cone", "Torus")
 METHODS = ("rho", "sigma", "mixed")
 INTERFACES = ("Auto", "End", "Start")
+CONTINUITIES = ("C2", "C1")
 
 # The dimensions of each kind: the lengths, then (around list, profile list).
 KIND_LENGTHS = {
@@ -101,6 +104,8 @@ _PROPERTIES = (
      "height)", None, 0),
     ("App::PropertyEnumeration", "Method", "Reparameterization of the transition (Section 3): rho, sigma or "
      "mixed", "rho", 0),
+    ("App::PropertyEnumeration", "Continuity", "C2: the (6,5) strip of Section 4.2 to bicubic NURBS; C1: the (4,2) "
+     "double strip of Section 5 to biquadratic NURBS", "C2", 0),
     ("App::PropertyLinkSub", "FreeForm", "A B-spline face to join instead of the default ring: bicubic, periodic "
      "around the axis (in u), clamped along it, its first row near the interface", None, 0),
     ("App::PropertyEnumeration", "Interface", "Where the free-form side joins the profile: Auto (its end, or its "
@@ -120,10 +125,10 @@ class BlendShape(FeatureProxy):
     sewn shell."""
 
     Type = "BlendShape"
-    VERSION = 2  # 2: FreeForm, Interface, JoinTo
+    VERSION = 2  # 2: FreeForm, Interface, JoinTo, Continuity
     GROUP = "Blend basic shape"
     PROPERTIES = _PROPERTIES
-    ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES}
+    ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES, "Continuity": CONTINUITIES}
     OUTPUTS = ("Status", "Patches")
 
     def ensure_properties(self, obj):
@@ -248,13 +253,15 @@ def blend_result(obj):
         relative = obj.Placement.inverse().multiply(other.Placement)
         second = basic_shape(other, relative)
         if obj.Naive:
+            if obj.Continuity == "C1":
+                raise InputError("the naive join has no C1 variant: use C2, or turn Naive off")
             return blend.join_naive(shape, second)
-        return blend.join_basic_shapes(shape, second, method=obj.Method)
+        return blend.join_basic_shapes(shape, second, continuity=obj.Continuity, method=obj.Method)
     ring = freeform_surface(obj)
     at = None if obj.Interface == "Auto" else obj.Interface.lower()
     if obj.Naive:
-        return blend.blend_naive(shape, freeform=ring, at=at)
-    return blend.blend_basic_shape(shape, freeform=ring, method=obj.Method, at=at)
+        return blend.blend_naive(shape, freeform=ring, continuity=obj.Continuity, at=at)
+    return blend.blend_basic_shape(shape, freeform=ring, continuity=obj.Continuity, method=obj.Method, at=at)
 
 
 def is_blend_shape(obj):
@@ -262,7 +269,7 @@ def is_blend_shape(obj):
 
 
 def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, freeform=None,
-                     interface="Auto", join_to=None, **dimensions):
+                     interface="Auto", join_to=None, continuity="C2", **dimensions):
     """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
     step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
     units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
@@ -275,6 +282,8 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         raise InputError(f"unknown kind {kind!r}: use one of {', '.join(KINDS)}")
     if method not in METHODS:
         raise InputError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
+    if continuity not in CONTINUITIES:
+        raise InputError(f"unknown continuity {continuity!r}: use one of {', '.join(CONTINUITIES)}")
     if interface not in INTERFACES:
         raise InputError(f"unknown interface {interface!r}: use one of {', '.join(INTERFACES)}")
     link = None
@@ -299,6 +308,7 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         obj.Method = method
         obj.Naive = bool(naive)
         obj.Interface = interface
+        obj.Continuity = continuity
         if link is not None:
             obj.FreeForm = link
         if join_to is not None:

@@ -9,6 +9,7 @@ import FreeCAD
 import FreeCADGui
 
 from ..features.blend_shape import (
+    CONTINUITIES,
     INTERFACES,
     KIND_DEFAULTS,
     KIND_LENGTHS,
@@ -170,7 +171,8 @@ class BlendShapePanel(LiveEditPanel):
         self.doc = obj.Document
         dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
         self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
-                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface", "JoinTo"] + dimensions)
+                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface", "JoinTo",
+                                 "Continuity"] + dimensions)
         self._updating = False
         self.widgets = {}
 
@@ -198,6 +200,13 @@ class BlendShapePanel(LiveEditPanel):
         self.method.setCurrentIndex(METHODS.index(obj.Method))
         self.method.currentIndexChanged.connect(lambda i: self.set_method(METHODS[i]))
         bottom.addRow(translate("FairSplines", "Method"), self.method)
+        self.continuity = QtWidgets.QComboBox()
+        self.continuity.addItems(list(CONTINUITIES))
+        self.continuity.setCurrentIndex(CONTINUITIES.index(obj.Continuity))
+        self.continuity.setToolTip(translate("FairSplines", "C2: (6,5) strip to bicubic NURBS (Section 4.2); "
+                                                            "C1: (4,2) double strip to biquadratic NURBS (Section 5)"))
+        self.continuity.currentIndexChanged.connect(lambda i: self.set_continuity(CONTINUITIES[i]))
+        bottom.addRow(translate("FairSplines", "Continuity"), self.continuity)
         self.naive = QtWidgets.QCheckBox(translate("FairSplines", "Naive blend (Fig. 2a, not C2)"))
         self.naive.setChecked(bool(obj.Naive))
         self.naive.toggled.connect(self.set_naive)
@@ -361,6 +370,11 @@ class BlendShapePanel(LiveEditPanel):
                 self._updating = True
                 self.naive.setChecked(bool(on))
                 self._updating = False
+
+    def set_continuity(self, continuity):
+        if not self._updating and continuity != self.obj.Continuity:
+            self._apply([("Continuity", continuity)])
+            self._select(self.continuity, CONTINUITIES.index(continuity))
 
     def set_interface(self, interface):
         if not self._updating and interface != self.obj.Interface:

@@ -143,6 +143,15 @@ def test_panel_drives_the_blend_live_and_shows_zebra_seams(scene, artifacts):
     assert dark > 5000 and white > 5000, (dark, white)  # not blank: stripes on the shell
     assert blend.ViewObject.Proxy.zebra.vertex_count > 1000
 
+    panel.continuity.setCurrentIndex(1)  # C1: Section 5, (4,2) double strip
+    assert blend.Continuity == "C1" and blend.Status == "ok", blend.Status
+    assert "transition 20" in blend.Patches  # five arcs, two quartics each, two strip rows
+    gui().updateGui()
+    c1 = screenshot(doc, os.path.join(artifacts, "blend_torus_c1_zebra.png"))
+    assert stripe_pixels(c1)[0] > 5000
+    panel.continuity.setCurrentIndex(0)
+    assert blend.Continuity == "C2"
+
     panel.naive.setChecked(True)
     assert blend.Naive and blend.Status == "ok"
     gui().updateGui()

@@ -289,3 +289,19 @@ def test_join_to_another_blend_shape_joins_the_two_basic_shapes(doc, tmp_path):
     post.JoinTo = other
     doc.recompute()
     assert "same number of arcs" in post.Status
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_c1_continuity_builds_the_section_5_blend(doc, kind):
+    obj = make_blend_shape(doc, kind, continuity="C1")
+    assert obj.Status == "ok", obj.Status
+    assert obj.Shape.isValid()
+    # six arcs around: two quartics an arc, two strip rows
+    assert "transition 24" in obj.Patches
+    degrees = {(f.Surface.UDegree, f.Surface.VDegree) for f in obj.Shape.Faces}
+    assert (4, 2) in degrees
+    c2 = make_blend_shape(doc, kind)
+    assert c2.Patches != obj.Patches
+    obj.Continuity = "C2"
+    doc.recompute()
+    assert obj.Patches == c2.Patches
