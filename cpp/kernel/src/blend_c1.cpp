@@ -102,38 +102,6 @@ void aroundAxis(G1RevolvedShape& s, const ShapeFrame& frame, const Eigen::Vector
   g1Circle(angles, s.circle, s.beta, s.closedU);
 }
 
-/// Checks the ring against the interface and returns it with the half-arc knots inserted.
-Handle(Geom_BSplineSurface) matchRingC1(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
-                                        const Eigen::VectorXd& cuts) {
-  const int n = static_cast<int>(T.size()) - 1;
-  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
-  if (ring.IsNull()) throw mismatch("no surface");
-  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
-  if (ring->UDegree() != 2 || ring->VDegree() != 2) throw mismatch("it must be biquadratic (degree 2 in u and v)");
-  if (ring->NbUKnots() != n + 1) {
-    std::ostringstream os;
-    os << "it needs " << n << " knot intervals in u (one per arc around the axis), not " << ring->NbUKnots() - 1;
-    throw mismatch(os.str());
-  }
-  const double period = T[n] - T[0];
-  for (int i = 0; i <= n; ++i) {
-    if (i < n && ring->UMultiplicity(i + 1) != 1) throw mismatch("its u knots must be simple (C1 in u)");
-    if (std::abs(ring->UKnot(i + 1) - T[i]) > 1e-9 * period) {
-      std::ostringstream os;
-      os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << T[i]
-         << " (knot intervals in the ratios betaT of the arcs, ringKnotsC1)";
-      throw mismatch(os.str());
-    }
-  }
-  if (ring->VMultiplicity(1) != 3) throw mismatch("it must be clamped in v (its first row is where the strip ends)");
-  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
-  for (Eigen::Index k = 0; k < cuts.size(); ++k) {
-    bool existing = false;
-    for (int i = 0; i <= n; ++i) existing = existing || std::abs(cuts[k] - T[i]) <= 1e-12 * period;
-    if (!existing) r->InsertUKnot(cuts[k], 1, 1e-12 * period);
-  }
-  return r;
-}
 
 /// Negative control: arc i split at its middle, each half degree-raised to a quartic (the
 /// identity map in the form of composeQuadratic2), no eta.
@@ -187,6 +155,40 @@ ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
   return out;
 }
 
+/// Section 5's double strip of u-piece k, rows vPiece and vPiece + 1, degree (4,2): the lower
+/// row takes the first-order Hermite data (two layers) of `below` (degree dvBelow in v, its
+/// top), the upper row those of `above` (degree dvAbove, its bottom), both rows as long as
+/// the row below; the shared centre line, the average of the two inner layers, makes the
+/// double strip C1 (with equal v-intervals it is the only choice).
+void doubleStrip(int k, int vPiece, const Homogeneous4& below, int dvBelow, const Homogeneous4& above, int dvAbove,
+                 std::vector<TaggedPatch>& patches) {
+  TaggedPatch lower, upper;
+  lower.role = upper.role = TaggedPatch::Role::Transition;
+  lower.degreeU = upper.degreeU = 4;
+  lower.degreeV = upper.degreeV = 2;
+  lower.uPiece = upper.uPiece = k;
+  lower.vPiece = vPiece;
+  upper.vPiece = vPiece + 1;
+  lower.bezier.resize(15, 4);
+  upper.bezier.resize(15, 4);
+  for (int a = 0; a <= 4; ++a) {
+    // Same v-derivative over the same length: 2 (b_1 - b_0) = dvBelow (top - the layer before).
+    const Eigen::RowVector4d b0 = below.row(a * (dvBelow + 1) + dvBelow);
+    const Eigen::RowVector4d b1 = b0 + dvBelow / 2.0 * (b0 - below.row(a * (dvBelow + 1) + dvBelow - 1));
+    const Eigen::RowVector4d c2 = above.row(a * (dvAbove + 1));
+    const Eigen::RowVector4d c1 = c2 - dvAbove / 2.0 * (above.row(a * (dvAbove + 1) + 1) - c2);
+    const Eigen::RowVector4d centre = (b1 + c1) / 2;
+    lower.bezier.row(a * 3) = b0;
+    lower.bezier.row(a * 3 + 1) = b1;
+    lower.bezier.row(a * 3 + 2) = centre;
+    upper.bezier.row(a * 3) = centre;
+    upper.bezier.row(a * 3 + 1) = c1;
+    upper.bezier.row(a * 3 + 2) = c2;
+  }
+  patches.push_back(std::move(lower));
+  patches.push_back(std::move(upper));
+}
+
 }  // namespace
 
 TaggedPatch G1RevolvedShape::patch(int i, int j) const {
@@ -217,21 +219,8 @@ G1RevolvedShape g1Cone(const ShapeFrame& frame, double radius0, double slope, co
   if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
   G1RevolvedShape s;
   aroundAxis(s, frame, angles);
+  detail::checkHeights(heights, radius0, slope);
   const int m = static_cast<int>(heights.size()) - 1;
-  if (m < 1) throw InputError("a profile needs at least two heights");
-  for (int j = 0; j <= m; ++j) {
-    if (!std::isfinite(heights[j])) throw InputError("non-finite height");
-    if (j > 0 && !(heights[j] > heights[j - 1])) {
-      std::ostringstream os;
-      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
-      throw InputError(os.str());
-    }
-    if (!(radius0 + slope * heights[j] > 0)) {
-      std::ostringstream os;
-      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
-      throw InputError(os.str());
-    }
-  }
   // Lines degree-raised to 2: C1 over the heights as they are (beta_j = h_j / h_{j-1}).
   s.profileBeta = Eigen::VectorXd::Ones(m);
   for (int j = 0; j < m; ++j) {
@@ -343,7 +332,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
 
   // Step 2: the ring, with the half-arc knots, its patches raised to degree 4 in u.
   if (ring.IsNull()) ring = defaultRingC1(shape, T);
-  const Handle(Geom_BSplineSurface) r = matchRingC1(ring, T, out.knotsU);
+  const Handle(Geom_BSplineSurface) r = detail::matchRingStrict(ring, T, out.knotsU, 2);
   const int spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
 
@@ -384,35 +373,8 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
       out.patches.push_back(std::move(p));
     }
     // Step 3 (Section 5): first-order Hermite data across the boundary, two layers per side,
-    // fill the double strip of degree (4,2); the centre line makes it C1 (equal intervals:
-    // the average of the two inner layers).
-    TaggedPatch lower, upper;
-    lower.role = upper.role = TaggedPatch::Role::Transition;
-    lower.degreeU = upper.degreeU = 4;
-    lower.degreeV = upper.degreeV = 2;
-    lower.uPiece = upper.uPiece = k;
-    lower.vPiece = out.rowsBasic;
-    upper.vPiece = out.rowsBasic + 1;
-    lower.bezier.resize(15, 4);
-    upper.bezier.resize(15, 4);
-    const int nb = dvBasic + 1;
-    for (int a = 0; a <= 4; ++a) {
-      // Basic side: b_0 its top row, b_1 with the same v-derivative over the same length:
-      // 2 (b_1 - b_0) = dvBasic (top_dv - top_{dv-1}).
-      const Eigen::RowVector4d b0 = top.row(a * nb + dvBasic);
-      const Eigen::RowVector4d b1 = b0 + dvBasic / 2.0 * (b0 - top.row(a * nb + dvBasic - 1));
-      // Ring side: c_2 its first row, c_1 mirrored (degree 2 on both sides, equal lengths).
-      const Eigen::RowVector4d c2 = ringBottom.bezier.row(a * 3), c1 = 2 * c2 - ringBottom.bezier.row(a * 3 + 1);
-      const Eigen::RowVector4d centre = (b1 + c1) / 2;
-      lower.bezier.row(a * 3) = b0;
-      lower.bezier.row(a * 3 + 1) = b1;
-      lower.bezier.row(a * 3 + 2) = centre;
-      upper.bezier.row(a * 3) = centre;
-      upper.bezier.row(a * 3 + 1) = c1;
-      upper.bezier.row(a * 3 + 2) = c2;
-    }
-    out.patches.push_back(std::move(lower));
-    out.patches.push_back(std::move(upper));
+    // fill the double strip of degree (4,2).
+    doubleStrip(k, out.rowsBasic, top, dvBasic, ringBottom.bezier, 2, out.patches);
   }
   return out;
 }
@@ -499,32 +461,8 @@ BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bo
       }
     }
     // Section 5: first-order Hermite data of both sides (two layers each) fill the double
-    // strip of degree (4,2); its centre line, the average of the inner layers, makes it C1.
-    TaggedPatch lower, upper;
-    lower.role = upper.role = TaggedPatch::Role::Transition;
-    lower.degreeU = upper.degreeU = 4;
-    lower.degreeV = upper.degreeV = 2;
-    lower.uPiece = upper.uPiece = k;
-    lower.vPiece = out.rowsBasic;
-    upper.vPiece = out.rowsBasic + 1;
-    lower.bezier.resize(15, 4);
-    upper.bezier.resize(15, 4);
-    for (int u = 0; u <= 4; ++u) {
-      // Same v-derivative over the same length: 2 (b_1 - b_0) = da (top_da - top_(da-1)).
-      const Eigen::RowVector4d b0 = top.row(u * (da + 1) + da);
-      const Eigen::RowVector4d b1 = b0 + da / 2.0 * (b0 - top.row(u * (da + 1) + da - 1));
-      const Eigen::RowVector4d c2 = bottom.row(u * (db + 1));
-      const Eigen::RowVector4d c1 = c2 - db / 2.0 * (bottom.row(u * (db + 1) + 1) - c2);
-      const Eigen::RowVector4d centre = (b1 + c1) / 2;
-      lower.bezier.row(u * 3) = b0;
-      lower.bezier.row(u * 3 + 1) = b1;
-      lower.bezier.row(u * 3 + 2) = centre;
-      upper.bezier.row(u * 3) = centre;
-      upper.bezier.row(u * 3 + 1) = c1;
-      upper.bezier.row(u * 3 + 2) = c2;
-    }
-    out.patches.push_back(std::move(lower));
-    out.patches.push_back(std::move(upper));
+    // strip of degree (4,2).
+    doubleStrip(k, out.rowsBasic, top, da, bottom, db, out.patches);
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "fairsplines/blend_shapes.hpp"
 
+#include "fairsplines/blend_detail.hpp"
+
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
@@ -11,6 +13,32 @@
 #include "fairsplines/errors.hpp"
 
 namespace fairsplines {
+
+namespace detail {
+
+void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope) {
+  const int m = static_cast<int>(heights.size()) - 1;
+  if (m < 1) throw InputError("a profile needs at least two heights");
+  for (int j = 0; j <= m; ++j) {
+    if (!std::isfinite(heights[j])) {
+      std::ostringstream os;
+      os << "non-finite height at index " << j;
+      throw InputError(os.str());
+    }
+    if (j > 0 && !(heights[j] > heights[j - 1])) {
+      std::ostringstream os;
+      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
+      throw InputError(os.str());
+    }
+    if (!(radius0 + slope * heights[j] > 0)) {
+      std::ostringstream os;
+      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
+      throw InputError(os.str());
+    }
+  }
+}
+
+}  // namespace detail
 
 namespace {
 
@@ -152,21 +180,8 @@ void circleProfile(const G2CircleSpline& c, double radius, double rhoOffset, Hom
 /// pieces degree-raised to cubics (weights 1); beta_j = h_j / h_{j-1}, gamma_j = 0.
 void lineProfile(const Eigen::VectorXd& heights, double radius0, double slope, Homogeneous3& profile,
                  Eigen::VectorXd& beta, Eigen::VectorXd& gamma) {
+  detail::checkHeights(heights, radius0, slope);
   const int m = static_cast<int>(heights.size()) - 1;
-  if (m < 1) throw InputError("a profile needs at least two heights");
-  for (int j = 0; j <= m; ++j) {
-    if (!std::isfinite(heights[j])) throw InputError(angleList("non-finite height at index", j));
-    if (j > 0 && !(heights[j] > heights[j - 1])) {
-      std::ostringstream os;
-      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
-      throw InputError(os.str());
-    }
-    if (!(radius0 + slope * heights[j] > 0)) {
-      std::ostringstream os;
-      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
-      throw InputError(os.str());
-    }
-  }
   profile.resize(4 * m, 3);
   beta = Eigen::VectorXd::Ones(m);
   gamma = Eigen::VectorXd::Zero(m);

@@ -55,9 +55,44 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
   return out;
 }
 
+Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
+                                            const Eigen::VectorXd& cuts, int degree) {
+  const int n = static_cast<int>(T.size()) - 1;
+  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  if (ring.IsNull()) throw mismatch("no surface");
+  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (ring->UDegree() != degree || ring->VDegree() != degree) {
+    throw mismatch(degree == 3 ? "it must be bicubic" : "it must be biquadratic (degree 2 in u and v)");
+  }
+  if (ring->NbUKnots() != n + 1) {
+    std::ostringstream os;
+    os << "it needs " << n << " knot intervals in u (one per arc around the axis), not " << ring->NbUKnots() - 1;
+    throw mismatch(os.str());
+  }
+  const double period = T[n] - T[0];
+  for (int i = 0; i <= n; ++i) {
+    if (i < n && ring->UMultiplicity(i + 1) != 1) throw mismatch("its u knots must be simple");
+    if (std::abs(ring->UKnot(i + 1) - T[i]) > 1e-9 * period) {
+      std::ostringstream os;
+      os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << T[i]
+         << " (knot intervals in the ratios beta of the arcs)";
+      throw mismatch(os.str());
+    }
+  }
+  if (ring->VMultiplicity(1) != degree + 1) throw mismatch("it must be clamped in v (its first row is at the interface)");
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  for (Eigen::Index k = 0; k < cuts.size(); ++k) {
+    bool existing = false;
+    for (int i = 0; i <= n; ++i) existing = existing || std::abs(cuts[k] - T[i]) <= 1e-12 * period;
+    if (!existing) r->InsertUKnot(cuts[k], 1, 1e-12 * period);
+  }
+  return r;
+}
+
 }  // namespace detail
 
 using detail::bezierOf;
+using detail::matchRingStrict;
 using detail::revolveRows;
 
 namespace {
@@ -132,21 +167,8 @@ RevolvedProfile circleProfile(double rhoOffset, double r, const Eigen::VectorXd&
 /// A straight profile rho = radius0 + slope z over increasing heights: degree-raised
 /// lines (beta_j = h_j / h_{j-1}, gamma_j = 0), which are already C2 over the heights.
 RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd& heights) {
+  detail::checkHeights(heights, radius0, slope);
   const int m = static_cast<int>(heights.size()) - 1;
-  if (m < 1) throw InputError("a profile needs at least two heights");
-  for (int j = 0; j <= m; ++j) {
-    if (!std::isfinite(heights[j])) throw InputError("non-finite height");
-    if (j > 0 && !(heights[j] > heights[j - 1])) {
-      std::ostringstream os;
-      os << "heights must increase: height " << j << " (" << heights[j] << ") is not greater than height " << j - 1;
-      throw InputError(os.str());
-    }
-    if (!(radius0 + slope * heights[j] > 0)) {
-      std::ostringstream os;
-      os << "the radius at height " << j << " (z = " << heights[j] << ") is not positive";
-      throw InputError(os.str());
-    }
-  }
   RevolvedProfile p;
   for (int j = 0; j < m; ++j) {
     Homogeneous3 q(4, 3);
@@ -201,6 +223,20 @@ Homogeneous4 hermiteStrip(const Homogeneous4& lower, int dvLower, const Homogene
     for (int b = 0; b < 6; ++b) out.row(a * 6 + b) = rows[b];
   }
   return out;
+}
+
+/// The transition patch of u-piece k (row vPiece, degree (degreeU, 5)) from the Hermite data
+/// of the patch below (`lower`, degree dvLower in v) and the one above (`upper`).
+TaggedPatch stripPatch(int k, int vPiece, int degreeU, const Homogeneous4& lower, int dvLower,
+                       const Homogeneous4& upper, int dvUpper) {
+  TaggedPatch strip;
+  strip.role = TaggedPatch::Role::Transition;
+  strip.degreeU = degreeU;
+  strip.degreeV = 5;
+  strip.uPiece = k;
+  strip.vPiece = vPiece;
+  strip.bezier = hermiteStrip(lower, dvLower, upper, dvUpper, degreeU + 1);
+  return strip;
 }
 
 /// de Casteljau: the Bézier rows b split at t into the pieces over [0, t] and [t, 1].
@@ -262,37 +298,6 @@ C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vect
 
 namespace {
 
-/// Checks the ring against the interface and returns it with its u knots inserted at `cuts`.
-Handle(Geom_BSplineSurface) matchRing(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& arcT,
-                                      const Eigen::VectorXd& cuts) {
-  const int n = static_cast<int>(arcT.size()) - 1;
-  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
-  if (ring.IsNull()) throw mismatch("no surface");
-  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
-  if (ring->UDegree() != 3 || ring->VDegree() != 3) throw mismatch("it must be bicubic");
-  if (ring->NbUKnots() != n + 1) {
-    std::ostringstream os;
-    os << "it needs " << n << " knot intervals in u (one per longitude arc), not " << ring->NbUKnots() - 1;
-    throw mismatch(os.str());
-  }
-  const double period = arcT[n] - arcT[0];
-  for (int i = 0; i <= n; ++i) {
-    if (std::abs(ring->UKnot(i + 1) - arcT[i]) > 1e-9 * period) {
-      std::ostringstream os;
-      os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << arcT[i]
-         << " (knot intervals in the ratios beta of the longitudes)";
-      throw mismatch(os.str());
-    }
-  }
-  if (ring->VMultiplicity(1) != 4) throw mismatch("it must be clamped in v (its first row is the interface)");
-  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
-  for (Eigen::Index k = 0; k < cuts.size(); ++k) {
-    bool existing = false;
-    for (int i = 0; i <= n; ++i) existing = existing || std::abs(cuts[k] - arcT[i]) <= 1e-12 * period;
-    if (!existing) r->InsertUKnot(cuts[k], 1, 1e-12 * period);
-  }
-  return r;
-}
 
 
 /// A user ring's structure (periodic in u, bicubic, clamped in v) and its first row going
@@ -559,14 +564,7 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
       out.patches.push_back(std::move(p));
     }
     // Steps 2-3: three layers of Bézier coefficients on both sides, degree-raised to (6,5).
-    TaggedPatch strip;
-    strip.role = TaggedPatch::Role::Transition;
-    strip.degreeU = 6;
-    strip.degreeV = 5;
-    strip.uPiece = k;
-    strip.vPiece = out.rowsBasic;
-    strip.bezier = hermiteStrip(top, dvBasic, ringBottom, 3, 7);
-    out.patches.push_back(std::move(strip));
+    out.patches.push_back(stripPatch(k, out.rowsBasic, 6, top, dvBasic, ringBottom, 3));
   }
   return out;
 }
@@ -585,7 +583,7 @@ BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& l
   // The same arc knots as the blend (sigma: one piece per arc).
   const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
   if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
-  const Handle(Geom_BSplineSurface) r = matchRing(ring, T, T);
+  const Handle(Geom_BSplineSurface) r = matchRingStrict(ring, T, T, 3);
   BlendComplex out;
   out.knotsU = T;
   out.piecesU = lon.pieces();
@@ -614,14 +612,7 @@ BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& l
       out.patches.push_back(std::move(p));
     }
     // Fig. 2a: direct second-order Hermite interpolation, degree (3,5), no reparameterization.
-    TaggedPatch strip;
-    strip.role = TaggedPatch::Role::Transition;
-    strip.degreeU = 3;
-    strip.degreeV = 5;
-    strip.uPiece = k;
-    strip.vPiece = out.rowsBasic;
-    strip.bezier = hermiteStrip(top, 3, ringBottom, 3, 4);
-    out.patches.push_back(std::move(strip));
+    out.patches.push_back(stripPatch(k, out.rowsBasic, 3, top, 3, ringBottom, 3));
   }
   return out;
 }
@@ -736,14 +727,7 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
       if (j == 0) bottom = p.bezier;
       out.patches.push_back(std::move(p));
     }
-    TaggedPatch strip;
-    strip.role = TaggedPatch::Role::Transition;
-    strip.degreeU = 3;
-    strip.degreeV = 5;
-    strip.uPiece = k;
-    strip.vPiece = out.rowsBasic;
-    strip.bezier = hermiteStrip(top, 3, bottom, 3, 4);
-    out.patches.push_back(std::move(strip));
+    out.patches.push_back(stripPatch(k, out.rowsBasic, 3, top, 3, bottom, 3));
   }
   return out;
 }
@@ -880,14 +864,7 @@ BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution
       }
     }
     // Section 4.2, steps 2-3: three layers from each side, degree-raised to (6,5).
-    TaggedPatch strip;
-    strip.role = TaggedPatch::Role::Transition;
-    strip.degreeU = 6;
-    strip.degreeV = 5;
-    strip.uPiece = k;
-    strip.vPiece = out.rowsBasic;
-    strip.bezier = hermiteStrip(top, dv, bottom, dv, 7);
-    out.patches.push_back(std::move(strip));
+    out.patches.push_back(stripPatch(k, out.rowsBasic, 6, top, dv, bottom, dv));
   }
   return out;
 }

@@ -19,4 +19,14 @@ Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix
 Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
                       int& dv);
 
+/// Heights of a cylinder or cone profile (radius radius0 + slope z): at least two, finite,
+/// increasing, with a positive radius at each. Throws InputError naming the first offender.
+void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope);
+
+/// A free-form ring that must have exactly the knots T in u (one period): periodic, of the
+/// given degree in u and v with simple u knots, clamped in v; returned with `cuts` inserted.
+/// Throws InputError "the free-form net does not match the interface: ..." naming the problem.
+Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
+                                            const Eigen::VectorXd& cuts, int degree);
+
 }  // namespace fairsplines::detail
