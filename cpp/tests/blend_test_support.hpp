@@ -4,6 +4,8 @@
 #include <cmath>
 #include <initializer_list>
 
+#include <gp_Pnt.hxx>
+
 #include "fairsplines/blend_shapes.hpp"
 
 namespace fairsplines::test::blend {
@@ -28,6 +30,12 @@ inline ShapeFrame tilted() {
   f.y = Eigen::Vector3d(-1, 1, 1).normalized();
   f.z = f.x.cross(f.y);
   return f;
+}
+
+/// A point in the frame's coordinates (x, y across the axis, z along it).
+inline Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
+  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
+  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
 }
 
 }  // namespace fairsplines::test::blend

@@ -79,11 +79,6 @@ C1Seams c1Seams(const BlendComplex& c, const Eigen::VectorXd* knotsU = nullptr) 
   return report;
 }
 
-Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
-  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
-  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
-}
-
 /// Largest |distance| over dense samples (17 x 17) of the given patches.
 template <class F>
 double offShape(const std::vector<Handle(Geom_BSplineSurface)>& patches, F distance) {

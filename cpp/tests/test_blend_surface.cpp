@@ -229,11 +229,6 @@ TEST(SphereBlend, PatchesSewIntoOneValidShell) {
 
 namespace {
 
-Eigen::Vector3d localOf(const ShapeFrame& f, const gp_Pnt& q) {
-  const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin;
-  return {d.dot(f.x), d.dot(f.y), d.dot(f.z)};
-}
-
 template <class F>
 double offShape(const BlendComplex& c, F distance) {
   double worst = 0.0;

@@ -155,6 +155,24 @@ ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
   return out;
 }
 
+/// An empty Section 5 complex over the arc knots T: smoothness 1, two strip rows, closed in
+/// u, two quartics of half the arc's interval per arc (they join with scalar 1).
+BlendComplex c1Complex(const Eigen::VectorXd& T) {
+  const int n = static_cast<int>(T.size()) - 1;
+  BlendComplex out;
+  out.smoothness = 1;
+  out.rowsTransition = 2;
+  out.closedU = true;
+  out.piecesU = 2 * n;
+  out.knotsU.resize(2 * n + 1);
+  for (int i = 0; i < n; ++i) {
+    out.knotsU[2 * i] = T[i];
+    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;
+  }
+  out.knotsU[2 * n] = T[n];
+  return out;
+}
+
 /// Section 5's double strip of u-piece k, rows vPiece and vPiece + 1, degree (4,2): the lower
 /// row takes the first-order Hermite data (two layers) of `below` (degree dvBelow in v, its
 /// top), the upper row those of `above` (degree dvAbove, its bottom), both rows as long as
@@ -310,17 +328,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   // q^i∘eta^{i,0}, q^i∘eta^{i,1} (Appendix 7.3), exactly on the circle.
   const PointMatrix quartics =
       options.withoutEta ? splitAndRaise(shape.circle) : g1ToC1(shape.circle, shape.beta, betaT, true).bezier;
-  BlendComplex out;
-  out.smoothness = 1;
-  out.rowsTransition = 2;
-  out.closedU = true;
-  out.piecesU = 2 * n;
-  out.knotsU.resize(2 * n + 1);
-  for (int i = 0; i < n; ++i) {
-    out.knotsU[2 * i] = T[i];
-    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;  // the two quartics of an arc join with scalar 1
-  }
-  out.knotsU[2 * n] = T[n];
+  BlendComplex out = c1Complex(T);
 
   // Along the profile: the quadratics as they are, or (quarticInV, circles) eq. (12) too.
   const ProfileRows profile = profileRows(shape, options.quarticInV);
@@ -417,17 +425,7 @@ BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bo
   const Eigen::VectorXd T = arcKnotsC1(betaT, true);
   const PointMatrix quarticsA = g1ToC1(a.circle, a.beta, betaT, true).bezier;
   const PointMatrix quarticsB = g1ToC1(b.circle, b.beta, betaT, true).bezier;
-  BlendComplex out;
-  out.smoothness = 1;
-  out.rowsTransition = 2;
-  out.closedU = true;
-  out.piecesU = 2 * n;
-  out.knotsU.resize(2 * n + 1);
-  for (int i = 0; i < n; ++i) {
-    out.knotsU[2 * i] = T[i];
-    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;
-  }
-  out.knotsU[2 * n] = T[n];
+  BlendComplex out = c1Complex(T);
   const ProfileRows rowsA = profileRows(a, quarticInV), rowsB = profileRows(b, quarticInV);
   out.basicC2InV = rowsA.c1 && rowsB.c1;
   out.rowsBasic = static_cast<int>(rowsA.rows.size());
