@@ -342,11 +342,13 @@ TEST(C1Blend, BadInputRaisesInputErrorNamingTheProblem) {
   // A closed tube has no boundary.
   EXPECT_TRUE(has(inputErrorOf([&] { g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})); }),
                   "closed profile"));
-  // Rings that do not match the interface: uniform knots on a non-uniform partition; a
+  // Rings that do not match the interface: turning the other way around the axis; a
   // bicubic net; a ring open in u.
   const G1RevolvedShape zone = g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes);
-  const Handle(Geom_BSplineSurface) uniformRing = defaultRingC1(zone, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
-  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, uniformRing); }), "the free-form net does not match the interface: u knot"));
+  Handle(Geom_BSplineSurface) reversed = defaultRingC1(zone, ringKnotsC1(nonUniformTurn()));
+  reversed->UReverse();
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, reversed); }),
+                  "the free-form net does not match the interface: its first row turns the other way"));
   Handle(Geom_BSplineSurface) cubic = defaultRingC1(zone, ringKnotsC1(nonUniformTurn()));
   cubic->IncreaseDegree(3, 3);
   EXPECT_TRUE(has(inputErrorOf([&] { blendC1(zone, cubic); }), "biquadratic"));
@@ -407,4 +409,30 @@ TEST(C1Join, CylinderIntoADomeAndBadInput) {
   EXPECT_LT(worst, 1e-10);
   EXPECT_THROW(joinShapesC1(dome, post), InputError);  // the dome's end is its pole
   EXPECT_THROW(joinShapesC1(post, g1Cone(f, 1.0, 0.0, vec({0.0, 2.0, 4.0, 2 * kPi}), vec({2.0, 3.0}))), InputError);
+}
+
+TEST(C1Blend, RingOnOtherKnotsSharesTheParameterizationAndStaysExact) {
+  // A biquadratic ring on its own uniform knots: its period mapped onto the circle's, the
+  // quartic pieces split at its knots, the ring given theirs; the ring itself unchanged.
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape zone = g1SphereZone(f, 1.0, nonUniformTurn(), kLatitudes);
+  const Handle(Geom_BSplineSurface) ring = defaultRingC1(zone, Eigen::VectorXd::LinSpaced(8, 0.0, 7.0));
+  C1BlendOptions options;
+  options.quarticInV = true;
+  const BlendComplex c = blendC1(zone, ring, options);
+  EXPECT_GT(c.piecesU, 14);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  EXPECT_LT(offShape(basicOf(c), sphereDistance(f, 1.0)), 1e-10);
+  EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+  const double u0 = ring->UKnot(1), P = ring->UKnot(ring->NbUKnots()) - u0, T = c.knotsU[c.piecesU];
+  double worst = 0.0;
+  for (const TaggedPatch& p : c.patches) {
+    if (p.role != TaggedPatch::Role::FreeForm) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(p);
+    for (int a = 0; a <= 4; ++a) {
+      const double x = a / 4.0, u = c.knotsU[p.uPiece] + x * (c.knotsU[p.uPiece + 1] - c.knotsU[p.uPiece]);
+      worst = std::max(worst, s->Value(x, 0.5).Distance(ring->Value(u0 + u * P / T, 0.5)));
+    }
+  }
+  EXPECT_LT(worst, 1e-12);
 }

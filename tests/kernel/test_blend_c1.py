@@ -168,12 +168,13 @@ def test_bad_c1_requests_raise_input_error():
     bicubic = [s for role, s in fw.blend_basic_shape(zone, method="sigma").patches if role == "freeform"][0]
     with pytest.raises(fw.InputError, match="does not match the interface"):
         fw.blend_basic_shape(zone, freeform=bicubic, continuity="C1")
+    # A biquadratic ring beside the axis (around the world's Z axis, not the zone's).
     poles = [[FreeCAD.Vector(math.cos(a), math.sin(a), z) for z in (2.0, 2.2, 2.4)]
              for a in np.linspace(0, 2 * math.pi, 7, endpoint=False)]
-    uniform = Part.BSplineSurface()
-    uniform.buildFromPolesMultsKnots(poles, [1] * 8, [3, 3], list(range(8)), [0.0, 1.0], True, False, 2, 2)
-    with pytest.raises(fw.InputError, match="does not match the interface: u knot"):
-        fw.blend_basic_shape(zone, freeform=uniform, continuity="C1")
+    beside = Part.BSplineSurface()
+    beside.buildFromPolesMultsKnots(poles, [1] * 8, [3, 3], list(range(8)), [0.0, 1.0], True, False, 2, 2)
+    with pytest.raises(fw.InputError, match="does not match the interface: its first row does not go once around"):
+        fw.blend_basic_shape(zone, freeform=beside, continuity="C1")
     with pytest.raises(fw.InputError, match="continuity"):
         fw.blend_basic_shape(zone, continuity="G1")
 
@@ -219,3 +220,25 @@ def test_c1_join_of_two_differently_partitioned_tori():
     assert result.shell.isValid()
     along, across = c1_seams(fw._kernel.join_shapes_c1(a._revolution(), b._revolution()))
     assert along < 1e-8 and across < 1e-8
+
+
+def test_biquadratic_ring_on_its_own_knots_blends_c1():
+    # Any periodic biquadratic ring around the axis: the knots of both sides are merged.
+    zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES)
+    c = np.array(CENTER)
+    poles = [[FreeCAD.Vector(*(c + (1.6 * math.cos(a), 1.6 * math.sin(a), z))) for z in (1.9, 2.2, 2.5)]
+             for a in np.linspace(0, 2 * math.pi, 9, endpoint=False)]
+    ring = Part.BSplineSurface()
+    ring.buildFromPolesMultsKnots(poles, [1] * 10, [3, 3], [0.5 * k for k in range(10)], [0.0, 1.0], True, False, 2, 2)
+    result = fw.blend_basic_shape(zone, freeform=ring, continuity="C1")
+    assert result.surface.Continuity in C1_OR_BETTER and result.shell.isValid()
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs((p - FreeCAD.Vector(*CENTER)).Length - 2.0) for s in basic for p in samples(s, 5)) < 1e-10
+    along, across = c1_seams(complex_c1(zone, ring))
+    assert along < 1e-8 and across < 1e-8
+    worst = 0.0
+    for s in (s for role, s in result.patches if role == "freeform"):
+        for p in samples(s, 4):
+            u, v = ring.parameter(p)
+            worst = max(worst, (ring.value(u, v) - p).Length)
+    assert worst < 1e-9

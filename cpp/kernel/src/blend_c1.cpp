@@ -3,6 +3,7 @@
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -338,9 +339,25 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   out.basicC2InV = profile.c1;
   out.rowsBasic = static_cast<int>(rows.size());
 
-  // Step 2: the ring, with the half-arc knots, its patches raised to degree 4 in u.
-  if (ring.IsNull()) ring = defaultRingC1(shape, T);
-  const Handle(Geom_BSplineSurface) r = detail::matchRingStrict(ring, T, out.knotsU, 2);
+  // Step 2: the ring with the half-arc knots, its patches raised to degree 4 in u. A user
+  // ring may have any knots: its period is mapped onto the circle's, the quartic pieces are
+  // split at its knots (de Casteljau, exact; the C1 joins keep their scalars as lengths),
+  // and it gets theirs, so that both sides share one C1 parameterization.
+  PointMatrix circlePieces = quartics;
+  Handle(Geom_BSplineSurface) r;
+  if (ring.IsNull()) {
+    r = defaultRingC1(shape, T);
+  } else {
+    r = detail::normalisedRing(ring, shape.frame, T[n] - T[0], 2);
+    const std::vector<std::vector<double>> cuts = detail::ringCuts(r, out.knotsU);
+    if (std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); })) {
+      const detail::SplitPieces split = detail::splitBezierPieces(quartics, 5, out.knotsU, cuts);
+      circlePieces = split.bezier;
+      out.knotsU = split.knots;
+      out.piecesU = static_cast<int>(split.knots.size()) - 1;
+    }
+  }
+  r = detail::withKnots(r, out.knotsU);
   const int spansV = r->NbVKnots() - 1;
   out.rowsFreeForm = spansV;
 
@@ -357,7 +374,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   }
 
   for (int k = 0; k < out.piecesU; ++k) {
-    const PointMatrix circle = quartics.middleRows(5 * k, 5);
+    const PointMatrix circle = circlePieces.middleRows(5 * k, 5);
     Homogeneous4 top;
     for (int j = 0; j < out.rowsBasic; ++j) {
       TaggedPatch p;

@@ -89,9 +89,67 @@ Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& r
   return r;
 }
 
+Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
+                                           double period, int degree) {
+  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  if (ring.IsNull()) throw mismatch("no surface");
+  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (ring->UDegree() != degree || ring->VDegree() != degree) {
+    throw mismatch(degree == 3 ? "it must be bicubic" : "it must be biquadratic (degree 2 in u and v)");
+  }
+  if (ring->VMultiplicity(1) != degree + 1) throw mismatch("it must be clamped in v (its first row is the interface)");
+  const double u0 = ring->UKnot(1), P = ring->UKnot(ring->NbUKnots()) - u0, v0 = ring->VKnot(1);
+  // Winding number of the first row about the axis, from 64 samples per knot span.
+  const int samples = 64 * (ring->NbUKnots() - 1);
+  double turned = 0.0, previous = 0.0;
+  for (int k = 0; k <= samples; ++k) {
+    const gp_Pnt q = ring->Value(u0 + P * k / samples, v0);
+    const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - frame.origin;
+    const double angle = std::atan2(d.dot(frame.y), d.dot(frame.x));
+    if (k > 0) turned += std::remainder(angle - previous, 2 * M_PI);
+    previous = angle;
+  }
+  const double winding = turned / (2 * M_PI);
+  if (std::abs(winding + 1) < 0.5) throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
+  if (std::abs(winding - 1) >= 0.5) throw mismatch("its first row does not go once around the shape's axis");
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  TColStd_Array1OfReal knots(1, r->NbUKnots());
+  for (int i = 1; i <= r->NbUKnots(); ++i) knots.SetValue(i, (r->UKnot(i) - u0) * period / P);
+  r->SetUKnots(knots);
+  return r;
+}
+
+Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  const double period = knotsU[knotsU.size() - 1] - knotsU[0];
+  for (Eigen::Index k = 0; k < knotsU.size(); ++k) {
+    bool existing = false;
+    for (int i = 1; i <= ring->NbUKnots(); ++i) existing = existing || std::abs(knotsU[k] - ring->UKnot(i)) <= 1e-12 * period;
+    if (!existing) r->InsertUKnot(knotsU[k], 1, 1e-12 * period);
+  }
+  return r;
+}
+
+std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+  const int P = static_cast<int>(knotsU.size()) - 1;
+  const double period = knotsU[P] - knotsU[0];
+  std::vector<std::vector<double>> cuts(P);
+  for (int i = 1; i <= ring->NbUKnots(); ++i) {
+    const double u = ring->UKnot(i);
+    for (int k = 0; k < P; ++k) {
+      if (u > knotsU[k] + 1e-9 * period && u < knotsU[k + 1] - 1e-9 * period) {
+        cuts[k].push_back((u - knotsU[k]) / (knotsU[k + 1] - knotsU[k]));
+      }
+    }
+  }
+  return cuts;
+}
 }  // namespace detail
 
 using detail::bezierOf;
+using detail::normalisedRing;
+using detail::ringCuts;
+using detail::withKnots;
 using detail::matchRingStrict;
 using detail::revolveRows;
 
@@ -256,110 +314,63 @@ void splitBezier(const PointMatrix& b, double t, PointMatrix& left, PointMatrix&
 
 }  // namespace
 
-C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vector<double>>& cuts) {
-  if (static_cast<int>(cuts.size()) != c2.pieces()) throw InputError("splitPieces needs one list of cuts per piece");
-  const Eigen::VectorXd t = c2.knots();
+namespace detail {
+
+SplitPieces splitBezierPieces(const PointMatrix& bezier, int order, const Eigen::VectorXd& knots,
+                              const std::vector<std::vector<double>>& cuts) {
+  const int P = static_cast<int>(bezier.rows()) / order;
+  if (static_cast<int>(cuts.size()) != P || knots.size() != P + 1) {
+    throw InputError("splitting needs one list of cuts per piece and one knot more than pieces");
+  }
   std::vector<PointMatrix> pieces;
-  std::vector<double> lengths;
-  std::vector<int> newIndex(c2.pieces() + 1, 0);
-  for (int k = 0; k < c2.pieces(); ++k) {
-    newIndex[k] = static_cast<int>(pieces.size());
-    PointMatrix rest = c2.bezier.middleRows(7 * k, 7);
+  std::vector<double> t{knots[0]};
+  SplitPieces out;
+  out.first.assign(P + 1, 0);
+  for (int k = 0; k < P; ++k) {
+    out.first[k] = static_cast<int>(pieces.size());
+    PointMatrix rest = bezier.middleRows(order * k, order);
     double done = 0.0;  // the part of piece k already cut off
     for (double x : cuts[k]) {
       if (!(x > done && x < 1.0)) throw InputError("cuts must increase strictly inside (0, 1)");
       PointMatrix left, right;
       splitBezier(rest, (x - done) / (1.0 - done), left, right);
       pieces.push_back(left);
-      lengths.push_back((x - done) * (t[k + 1] - t[k]));
+      t.push_back(knots[k] + x * (knots[k + 1] - knots[k]));
       rest = right;
       done = x;
     }
     pieces.push_back(rest);
-    lengths.push_back((1.0 - done) * (t[k + 1] - t[k]));
+    t.push_back(knots[k + 1]);
   }
-  newIndex[c2.pieces()] = static_cast<int>(pieces.size());
-  C2SexticSpline out;
-  out.closed = c2.closed;
-  for (int first : c2.firstPiece) out.firstPiece.push_back(newIndex[first]);
-  const int P = static_cast<int>(pieces.size());
-  out.bezier.resize(7 * P, c2.bezier.cols());
-  out.beta.resize(P);
-  for (int k = 0; k < P; ++k) {
-    out.bezier.middleRows(7 * k, 7) = pieces[k];
-    out.beta[k] = k > 0 ? lengths[k] / lengths[k - 1] : 1.0;
-  }
-  // The closing join keeps its scalar, rescaled by the new lengths of the first and last pieces.
-  const int last = c2.pieces() - 1;
-  out.beta[0] = c2.closed ? c2.beta[0] * (lengths[0] / (t[1] - t[0])) / (lengths[P - 1] / (t[last + 1] - t[last]))
-                          : c2.beta[0];
+  out.first[P] = static_cast<int>(pieces.size());
+  out.bezier.resize(order * static_cast<Eigen::Index>(pieces.size()), bezier.cols());
+  for (size_t k = 0; k < pieces.size(); ++k) out.bezier.middleRows(order * static_cast<Eigen::Index>(k), order) = pieces[k];
+  out.knots = Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
   return out;
 }
 
-namespace {
+}  // namespace detail
 
-
-
-/// A user ring's structure (periodic in u, bicubic, clamped in v) and its first row going
-/// once around the axis in the direction of u; returns a copy whose u period is mapped
-/// affinely onto [0, period] (its first knot to the shape's first angle).
-Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
-                                           double period) {
-  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
-  if (ring.IsNull()) throw mismatch("no surface");
-  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
-  if (ring->UDegree() != 3 || ring->VDegree() != 3) throw mismatch("it must be bicubic");
-  if (ring->VMultiplicity(1) != 4) throw mismatch("it must be clamped in v (its first row is the interface)");
-  const double u0 = ring->UKnot(1), P = ring->UKnot(ring->NbUKnots()) - u0, v0 = ring->VKnot(1);
-  // Winding number of the first row about the axis, from 64 samples per knot span.
-  const int samples = 64 * (ring->NbUKnots() - 1);
-  double turned = 0.0, previous = 0.0;
-  for (int k = 0; k <= samples; ++k) {
-    const gp_Pnt q = ring->Value(u0 + P * k / samples, v0);
-    const Eigen::Vector3d d = Eigen::Vector3d(q.X(), q.Y(), q.Z()) - frame.origin;
-    const double angle = std::atan2(d.dot(frame.y), d.dot(frame.x));
-    if (k > 0) turned += std::remainder(angle - previous, 2 * kPi);
-    previous = angle;
+C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vector<double>>& cuts) {
+  if (static_cast<int>(cuts.size()) != c2.pieces()) throw InputError("splitPieces needs one list of cuts per piece");
+  const Eigen::VectorXd t = c2.knots();
+  const detail::SplitPieces split = detail::splitBezierPieces(c2.bezier, 7, t, cuts);
+  C2SexticSpline out;
+  out.closed = c2.closed;
+  out.bezier = split.bezier;
+  for (int first : c2.firstPiece) out.firstPiece.push_back(split.first[first]);
+  const int P = out.pieces();
+  out.beta.resize(P);
+  for (int k = 0; k < P; ++k) {
+    out.beta[k] = k > 0 ? (split.knots[k + 1] - split.knots[k]) / (split.knots[k] - split.knots[k - 1]) : 1.0;
   }
-  const double winding = turned / (2 * kPi);
-  if (std::abs(winding + 1) < 0.5) throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
-  if (std::abs(winding - 1) >= 0.5) throw mismatch("its first row does not go once around the shape's axis");
-  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
-  TColStd_Array1OfReal knots(1, r->NbUKnots());
-  for (int i = 1; i <= r->NbUKnots(); ++i) knots.SetValue(i, (r->UKnot(i) - u0) * period / P);
-  r->SetUKnots(knots);
-  return r;
+  // The closing join keeps its scalar, rescaled by the new lengths of the first and last pieces.
+  const int last = c2.pieces() - 1;
+  out.beta[0] = c2.closed ? c2.beta[0] * ((split.knots[1] - split.knots[0]) / (t[1] - t[0])) /
+                                ((split.knots[P] - split.knots[P - 1]) / (t[last + 1] - t[last]))
+                          : c2.beta[0];
+  return out;
 }
-
-/// The ring with every knot of `knotsU` inserted (those it lacks), so that each u-interval
-/// is one Bézier span.
-Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
-  Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
-  const double period = knotsU[knotsU.size() - 1] - knotsU[0];
-  for (Eigen::Index k = 0; k < knotsU.size(); ++k) {
-    bool existing = false;
-    for (int i = 1; i <= ring->NbUKnots(); ++i) existing = existing || std::abs(knotsU[k] - ring->UKnot(i)) <= 1e-12 * period;
-    if (!existing) r->InsertUKnot(knotsU[k], 1, 1e-12 * period);
-  }
-  return r;
-}
-
-/// Cuts (local parameters per piece) where the ring has u knots inside the pieces of knotsU.
-std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
-  const int P = static_cast<int>(knotsU.size()) - 1;
-  const double period = knotsU[P] - knotsU[0];
-  std::vector<std::vector<double>> cuts(P);
-  for (int i = 1; i <= ring->NbUKnots(); ++i) {
-    const double u = ring->UKnot(i);
-    for (int k = 0; k < P; ++k) {
-      if (u > knotsU[k] + 1e-9 * period && u < knotsU[k + 1] - 1e-9 * period) {
-        cuts[k].push_back((u - knotsU[k]) / (knotsU[k + 1] - knotsU[k]));
-      }
-    }
-  }
-  return cuts;
-}
-}  // namespace
 
 Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch) {
   const int nu = patch.degreeU + 1, nv = patch.degreeV + 1;
@@ -507,7 +518,7 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
   if (ring.IsNull()) {
     r = defaultRing(frame, lon, profile, T);
   } else {
-    r = normalisedRing(ring, frame, out.knotsU[out.knotsU.size() - 1]);
+    r = normalisedRing(ring, frame, out.knotsU[out.knotsU.size() - 1], 3);
     const std::vector<std::vector<double>> cuts = ringCuts(r, out.knotsU);
     const bool any = std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); });
     if (any) {

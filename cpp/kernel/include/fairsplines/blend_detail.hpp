@@ -2,6 +2,7 @@
 // Peters), shared by the C2 (blend_surface.cpp) and C1 (G1 to C1) constructions.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
 #include "fairsplines/types.hpp"
@@ -28,5 +29,28 @@ void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope);
 /// Throws InputError "the free-form net does not match the interface: ..." naming the problem.
 Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
                                             const Eigen::VectorXd& cuts, int degree);
+
+/// A user ring's structure (periodic in u, of `degree` in u and v, clamped in v) and its
+/// first row going once around the frame's axis in the direction of u; returns a copy whose
+/// u period is mapped affinely onto [0, period] (its first knot to the shape's first angle).
+/// Throws InputError "the free-form net does not match the interface: ..." otherwise.
+Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
+                                           double period, int degree);
+
+/// The ring with every knot of `knotsU` it lacks inserted (each u-interval one Bézier span).
+Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU);
+
+/// Local cuts (per piece of knotsU) where the ring has u knots inside the pieces.
+std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU);
+
+/// Bézier pieces of `order` rows each over `knots`, split at the local cuts: the pieces,
+/// their knots, and where each old piece starts (first, one more entry).
+struct SplitPieces {
+  PointMatrix bezier;
+  Eigen::VectorXd knots;
+  std::vector<int> first;
+};
+SplitPieces splitBezierPieces(const PointMatrix& bezier, int order, const Eigen::VectorXd& knots,
+                              const std::vector<std::vector<double>>& cuts);
 
 }  // namespace fairsplines::detail
