@@ -100,9 +100,9 @@ def _complex(shape, freeform, method, naive, at):
 
 def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=None):
     """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
-    periodic-in-u, clamped-in-v Part.BSplineSurface with the knots of freeform_knots, its
-    first row at the interface), or to a default ring that continues the shape, with a C2
-    transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
+    periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its first
+    row near the interface, on any knots: they are merged with the shape's), or to a
+    default ring that continues the shape, with a C2 transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
     or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
     start where the end is a pole). A shape edited with shape.set_control (Fig. 1c/d) is
     joined as edited: C2 along the interface and across the strip, the rows across the
@@ -111,9 +111,10 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     if continuity == "C1":
         from .blend_c1 import blend_basic_shape_c1
 
-        if shape.edited or at not in (None, "end"):
-            raise InputError("the C1 variant joins the unedited shape at the end of its profile")
-        return blend_basic_shape_c1(shape, freeform)
+        if shape.edited:
+            raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
+        _check(shape, continuity, method)
+        return blend_basic_shape_c1(shape, freeform, at=_interface(shape, at))
     _check(shape, continuity, method)
     if shape.edited:
         if _interface(shape, at) != "end":
@@ -133,7 +134,7 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
     if continuity == "C1":
         from .blend_c1 import blend_naive_c1
 
-        return blend_naive_c1(shape, freeform)
+        return blend_naive_c1(shape, freeform, at=_interface(shape, at))
     return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 

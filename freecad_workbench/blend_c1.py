@@ -46,32 +46,33 @@ def _beta_t(shape, beta_t):
     return values
 
 
-def complex_c1(shape, freeform=None, beta_t=None, naive=False):
+def complex_c1(shape, freeform=None, beta_t=None, naive=False, at="end"):
     """The kernel's BlendComplex of Section 5 (smoothness 1) for `shape` and a biquadratic
     Part.BSplineSurface ring (or None for the default ring). beta_t: new continuity scalars
     around the axis (beta_t[i] between arcs i-1 and i, multiplying to 1), None for beta.
-    naive: the arcs only split and degree-raised, without eta (the baseline; not C1)."""
+    naive: the arcs only split and degree-raised, without eta (the baseline; not C1).
+    at: "end" or "start" of the profile (the start: the profile run backwards)."""
     _checked(shape)
     ring = None if freeform is None else surface_from_part(freeform)
-    return _kernel.blend_c1(shape._revolution(), ring, _beta_t(shape, beta_t), True, naive)
+    return _kernel.blend_c1(shape._revolution(), ring, _beta_t(shape, beta_t), True, naive, at)
 
 
-def blend_basic_shape_c1(shape, freeform=None, beta_t=None):
+def blend_basic_shape_c1(shape, freeform=None, beta_t=None, at="end"):
     """Section 5: `shape` joined at the end of its profile to a biquadratic C1 ring (or the
     default one) by a C1 (4,2) double strip. Returns a BlendResult (patches, shell, surface).
     beta_t as for complex_c1 (a user ring then needs freeform_knots_c1(shape, beta_t))."""
     from .blend import _result
 
-    return _result(complex_c1(shape, freeform, beta_t))
+    return _result(complex_c1(shape, freeform, beta_t, at=at))
 
 
-def blend_naive_c1(shape, freeform=None):
+def blend_naive_c1(shape, freeform=None, at="end"):
     """The C1 baseline: the G1 shape's arcs split at their middle and degree-raised to 4
     without the eta reparameterization, the same (4,2) double strip. Its seams along the
     strip are not C1 in homogeneous space, so it has no single C1 surface (.surface None)."""
     from .blend import _result
 
-    return _result(complex_c1(shape, freeform, None, naive=True), single=False)
+    return _result(complex_c1(shape, freeform, None, naive=True, at=at), single=False)
 
 
 __all__ = ["blend_basic_shape_c1", "blend_naive_c1", "complex_c1", "freeform_knots_c1"]

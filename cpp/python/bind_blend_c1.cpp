@@ -6,11 +6,13 @@
 #include <pybind11/stl.h>
 
 #include <optional>
+#include <string>
 
 #include <Geom_BSplineSurface.hxx>
 
 #include "bindings.hpp"
 #include "fairsplines/blend_c1.hpp"
+#include "fairsplines/errors.hpp"
 #include "fairsplines/surfaces.hpp"
 
 namespace py = pybind11;
@@ -29,14 +31,17 @@ void bindBlendC1(py::module_& m) {
   m.def(
       "blend_c1",
       [](const ShapeOfRevolution& shape, const std::optional<BSplineSurface>& ring, const Eigen::VectorXd& betaT,
-         bool quarticInV, bool naive) {
+         bool quarticInV, bool naive, const std::string& at) {
         C1BlendOptions options;
         options.betaT = betaT;
         options.quarticInV = quarticInV;
         options.withoutEta = naive;
-        return blendC1(g1Shape(shape), ring ? toOcct(*ring) : Handle(Geom_BSplineSurface)(), options);
+        if (at != "end" && at != "start") throw InputError("the interface must be at the profile's 'end' or 'start'");
+        const G1RevolvedShape g1 = at == "end" ? g1Shape(shape) : reversedProfile(g1Shape(shape));
+        return blendC1(g1, ring ? toOcct(*ring) : Handle(Geom_BSplineSurface)(), options);
       },
       "shape"_a, "ring"_a = py::none(), "beta_t"_a = Eigen::VectorXd(), "quartic_in_v"_a = true, "naive"_a = false,
+      "at"_a = "end",
       "Section 5: the shape as a G1 biquadratic spline joined at the end of its profile to a biquadratic C1 ring by "
       "a (4,2) double strip (a C1 complex; smoothness 1). naive: without eta (the arcs only split and raised).");
   m.def("ring_knots_c1", &ringKnotsC1, "angles"_a, "beta_t"_a = Eigen::VectorXd(),

@@ -436,3 +436,19 @@ TEST(C1Blend, RingOnOtherKnotsSharesTheParameterizationAndStaysExact) {
   }
   EXPECT_LT(worst, 1e-12);
 }
+
+TEST(C1Blend, ReversedProfileJoinsADomeAtItsStart) {
+  const ShapeFrame f = tilted();
+  const G1RevolvedShape dome = g1SphereZone(f, 1.0, nonUniformTurn(), vec({0.3, 0.8, 1.2, kPi / 2}));
+  EXPECT_THROW(blendC1(dome), InputError);  // its end is the pole
+  C1BlendOptions options;
+  options.quarticInV = true;
+  const BlendComplex c = blendC1(reversedProfile(dome), nullptr, options);
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  EXPECT_LT(offShape(basicOf(c), sphereDistance(f, 1.0)), 1e-10);
+  EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+  // Reversing twice gives the shape back.
+  const G1RevolvedShape twice = reversedProfile(reversedProfile(dome));
+  for (int j = 0; j < dome.piecesV(); ++j) EXPECT_LT((twice.profile[j] - dome.profile[j]).norm(), 1e-15);
+  EXPECT_LT((twice.profileBeta - dome.profileBeta).norm(), 1e-14);
+}

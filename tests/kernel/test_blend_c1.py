@@ -156,7 +156,8 @@ def test_bad_c1_requests_raise_input_error():
     with pytest.raises(fw.InputError, match="full turn"):
         fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 1.0, 2.0], [0.0, 1.0]), continuity="C1")
     with pytest.raises(fw.InputError, match="pole"):
-        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]), continuity="C1")
+        fw.blend_basic_shape(fw.shapes.SphereZone(CENTER, 1.0, NON_UNIFORM, [0.0, math.pi / 2]), continuity="C1",
+                             at="end")
     with pytest.raises(fw.InputError, match="no boundary|closed profile"):
         fw.blend_basic_shape(fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, NON_UNIFORM), continuity="C1")
     with pytest.raises(fw.InputError, match="radius"):
@@ -242,3 +243,18 @@ def test_biquadratic_ring_on_its_own_knots_blends_c1():
             u, v = ring.parameter(p)
             worst = max(worst, (ring.value(u, v) - p).Length)
     assert worst < 1e-9
+
+
+def test_c1_dome_joins_at_its_start():
+    dome = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, [0.3, 0.9, math.pi / 2], axis=AXIS)
+    result = fw.blend_basic_shape(dome, continuity="C1")  # its end is the pole: the start
+    assert result.surface.Continuity in C1_OR_BETTER and result.shell.isValid()
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs((p - FreeCAD.Vector(*CENTER)).Length - 2.0) for s in basic for p in samples(s, 5)) < 1e-10
+    along, across = c1_seams(complex_c1(dome, at="start"))
+    assert along < 1e-8 and across < 1e-8
+    axis = FreeCAD.Vector(*AXIS).normalize()
+    ring = [s for role, s in result.patches if role == "freeform"]
+    assert max((p - FreeCAD.Vector(*CENTER)).dot(axis) for s in ring for p in samples(s, 3)) < 2.0 * math.sin(0.3)
+    with pytest.raises(fw.InputError, match="pole"):
+        fw.blend_basic_shape(dome, continuity="C1", at="end")

@@ -93,6 +93,9 @@ void circleProfile(G1RevolvedShape& s, double rhoOffset, double r, const Eigen::
   s.end << rhoOffset + r * std::cos(phi), r * std::sin(phi);
   s.tangent << -std::sin(phi), std::cos(phi);
   s.size = r * (angles[m] - angles[m - 1]);
+  s.start << rhoOffset + r * std::cos(angles[0]), r * std::sin(angles[0]);
+  s.startTangent << std::sin(angles[0]), -std::cos(angles[0]);
+  s.startSize = r * (angles[1] - angles[0]);
 }
 
 void aroundAxis(G1RevolvedShape& s, const ShapeFrame& frame, const Eigen::VectorXd& angles) {
@@ -256,7 +259,25 @@ G1RevolvedShape g1Cone(const ShapeFrame& frame, double radius0, double slope, co
   s.end << radius0 + slope * heights[m], heights[m];
   s.tangent = Eigen::Vector2d(slope, 1.0).normalized();
   s.size = heights[m] - heights[m - 1];
+  s.start << radius0 + slope * heights[0], heights[0];
+  s.startTangent = -s.tangent;
+  s.startSize = heights[1] - heights[0];
   return s;
+}
+
+G1RevolvedShape reversedProfile(const G1RevolvedShape& shape) {
+  G1RevolvedShape r = shape;
+  const int m = shape.piecesV();
+  r.profile.clear();
+  for (int j = m - 1; j >= 0; --j) r.profile.push_back(shape.profile[j].colwise().reverse());
+  // beta'_j joins reversed pieces j - 1 and j, i.e. original pieces m - j and m - j - 1.
+  r.profileBeta = Eigen::VectorXd::Ones(m);
+  for (int j = 1; j < m; ++j) r.profileBeta[j] = 1.0 / shape.profileBeta[m - j];
+  for (int j = 0; j <= m; ++j) r.profileKnots[j] = shape.profileKnots[m] - shape.profileKnots[m - j];
+  std::swap(r.end, r.start);
+  std::swap(r.tangent, r.startTangent);
+  std::swap(r.size, r.startSize);
+  return r;
 }
 
 G1RevolvedShape g1Torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,

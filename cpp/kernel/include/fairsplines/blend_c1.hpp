@@ -29,6 +29,8 @@ struct G1RevolvedShape {
   Eigen::VectorXd profileKnots;       ///< lines: the heights (from 0); circles: 0, 1, ..., m
   Eigen::Vector2d end, tangent;       ///< (rho, zeta) at the profile's end, unit direction leaving it
   double size = 1.0;                  ///< length of the last profile piece (for the default ring)
+  Eigen::Vector2d start, startTangent;  ///< the same at the profile's start (direction leaving it backwards)
+  double startSize = 1.0;
   int piecesU() const { return static_cast<int>(circle.rows() / 3); }
   int piecesV() const { return static_cast<int>(profile.size()); }
   /// The biquadratic patch of arc i and profile piece j (role Basic, degree (2,2)).
@@ -48,6 +50,10 @@ G1RevolvedShape g1Cone(const ShapeFrame& frame, double radius0, double slope, co
 /// tube (0 = outer equator). Throws InputError for radii out of range.
 G1RevolvedShape g1Torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                         const Eigen::VectorXd& anglesV);
+
+/// The same shape with its profile run backwards (pieces, Bézier rows, scalars and knots
+/// mirrored), so that its start becomes the end where blendC1 joins (a dome's bottom).
+G1RevolvedShape reversedProfile(const G1RevolvedShape& shape);
 
 /// Choices of the Section 5 construction.
 struct C1BlendOptions {
