@@ -184,7 +184,7 @@ TEST(SphereBlend, RingThatDoesNotMatchTheInterfaceRaisesInputError) {
   Handle(Geom_BSplineSurface) open = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
   open->SetUNotPeriodic();
   expectMismatch(open, "periodic");
-  EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 1.0, 2.0}), lat), InputError);                  // not a full turn
+  EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 3.0, 6.0, 6.5}), lat), InputError);  // more than a full turn
   EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);                    // top at the pole
 }
 
@@ -522,4 +522,40 @@ TEST(EditedBlend, MovedControlPointIsJoinedC2AndArcsAwayFromItStayOnTheSphere) {
   EXPECT_THROW(singleSurface(c), InputError);  // rows are G2 across the profile
   // A structure of another shape is refused.
   EXPECT_THROW(blendEdited(zone, sphereZone(f, 1.0, uniformTurn(5), zone.profile)), InputError);
+}
+
+// ---- A partial turn around the axis (open in u) ----
+
+TEST(PartialTurn, OpenSphereZoneAndConesBlendC2WithDefaultAndUserRings) {
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd lon = vec({0.3, 1.0, 2.2, 2.6, 3.9}), lat = vec({-0.6, 0.1, 0.5, 0.8});
+  for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma, CircleReparam::Mixed}) {
+    const BlendComplex c = blendSphereZone(f, 1.0, lon, lat, method, nullptr, true);
+    EXPECT_FALSE(c.closedU);
+    EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
+    EXPECT_LT(seams(c).worst, 1e-8);
+    EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
+    EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+  }
+  // A user ring on its own (uniform, clamped) knots; one turning the other way is refused.
+  const Handle(Geom_BSplineSurface) ring = defaultSphereRing(f, 1.0, lon, lat, Eigen::VectorXd::LinSpaced(5, 0.0, 8.0));
+  EXPECT_FALSE(ring->IsUPeriodic());
+  const BlendComplex user = blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, ring, true);
+  EXPECT_LT(seams(user).worst, 1e-8);
+  Handle(Geom_BSplineSurface) reversed = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
+  reversed->UReverse();
+  EXPECT_THROW(blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, reversed), InputError);
+  EXPECT_THROW(blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, defaultSphereRing(f, 1.0, nonUniformTurn(), lat,
+                                                                                      ringKnots(nonUniformTurn()))),
+               InputError);  // a periodic ring for a partial turn
+  // The naive baseline works open too and still fails the check on the strip.
+  const BlendComplex naive = blendSphereZoneNaive(f, 1.0, lon, lat);
+  EXPECT_GT(seams(naive).alongU[naive.rowsBasic], 1e-3);
+  // Two cones over partial turns joined; a partial turn and a full one are not.
+  const ShapeOfRevolution a = coneShape(f, 2.0, 0.2, lon, vec({0.0, 1.0, 2.0}));
+  const ShapeOfRevolution b = coneShape(f, 2.9, -0.2, vec({0.2, 1.1, 2.0, 2.9, 3.8}), vec({3.0, 4.0}));
+  const BlendComplex joined = joinShapes(a, b);
+  EXPECT_FALSE(joined.closedU);
+  EXPECT_LT(seams(joined).worst, 1e-8);
+  EXPECT_THROW(joinShapes(a, coneShape(f, 2.9, -0.2, nonUniformTurn(), vec({3.0, 4.0}))), InputError);
 }

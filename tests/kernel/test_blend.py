@@ -138,8 +138,8 @@ def test_bad_blend_requests():
     zone = fw.shapes.SphereZone(CENTER, 2.0, NON_UNIFORM, LATITUDES)
     with pytest.raises(fw.InputError, match="continuity"):
         fw.blend_basic_shape(zone, continuity="G7")
-    with pytest.raises(fw.InputError, match="full turn"):
-        fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 1.0, 2.0], [0.0, 1.0]))
+    with pytest.raises(fw.InputError, match="more than a full turn"):
+        fw.blend_basic_shape(fw.shapes.Cylinder(CENTER, 1.0, [0.0, 3.0, 6.0, 6.5], [0.0, 1.0]))
     with pytest.raises(fw.InputError, match="no boundary"):
         fw.blend_basic_shape(fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, NON_UNIFORM))
     with pytest.raises(fw.InputError, match="pole"):
@@ -291,3 +291,26 @@ def test_circular_and_hyperbolic_cylinder_ensemble_blends_c2():
             assert max(abs(math.hypot(p.x, p.y) - R) for p in points) > 1e-3  # not the circle
         else:  # circular arcs: the middle third stays exact (eq. (11) only moves the ends)
             assert max(abs(math.hypot(p.x, p.y) - R) for p in points) < 1e-10
+
+
+def test_partial_turn_blends_c2_open_in_u():
+    # A sphere zone over part of a turn: the complex is open in u, its ring clamped.
+    zone = fw.shapes.SphereZone(CENTER, 2.0, [0.3, 1.0, 2.2, 2.6, 3.9], LATITUDES, axis=AXIS)
+    result = fw.blend_basic_shape(zone, method="sigma")
+    assert result.surface.Continuity == "C2" and result.shell.isValid()
+    assert not result.surface.isUPeriodic()
+    c = FreeCAD.Vector(*CENTER)
+    basic = [s for role, s in result.patches if role == "basic"]
+    assert max(abs((p - c).Length - 2.0) for s in basic for p in samples(s, 6)) < 1e-10 * 2.0
+    strip = [s for role, s in result.patches if role == "transition"]
+    knots = fw.freeform_knots(zone, "sigma")
+    worst = 0.0
+    for k in range(1, len(strip)):  # no closing seam
+        left, right = strip[k - 1], strip[k]
+        beta = (knots[k + 1] - knots[k]) / (knots[k] - knots[k - 1])
+        for v in np.linspace(0, 1, 7):
+            scale = max(left.getDN(1.0, v, 1, 0).Length, left.getDN(1.0, v, 2, 0).Length)
+            for order in (1, 2):
+                worst = max(worst, (right.getDN(0.0, v, order, 0) - left.getDN(1.0, v, order, 0) * beta ** order).Length
+                            / scale)
+    assert worst < 1e-8

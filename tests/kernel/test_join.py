@@ -106,7 +106,8 @@ def test_bad_join_requests():
     a = fw.shapes.Cylinder(CENTER, 1.0, NON_UNIFORM, [0.0, 1.0], axis=AXIS)
     with pytest.raises(fw.InputError, match="same number of arcs"):
         fw.join_basic_shapes(a, fw.shapes.Cylinder(CENTER, 1.0, [0, 2, 4, 2 * math.pi], [2.0, 3.0], axis=AXIS))
-    with pytest.raises(fw.InputError, match="full turn"):
-        fw.join_basic_shapes(a, fw.shapes.Cylinder(CENTER, 1.0, [0, 1, 2], [2.0, 3.0], axis=AXIS))
+    with pytest.raises(fw.InputError, match="full turn around the axis, or both a partial one"):
+        fw.join_basic_shapes(a, fw.shapes.Cylinder(CENTER, 1.0, [0, 0.5, 1, 1.5, 2, 2.5, 3, 3.5], [2.0, 3.0],
+                                                   axis=AXIS))
     with pytest.raises(fw.InputError, match="shape must be"):
         fw.join_basic_shapes(a, "cone")

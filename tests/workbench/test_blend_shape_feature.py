@@ -130,7 +130,7 @@ def test_undo_removes_the_feature(doc):
     "change, message",
     [
         (dict(Uniform=False, Longitudes=[0.0, 90.0, 90.0, 360.0]), "longitudes: value 2 (90°) must be greater than value 1 (90°)"),
-        (dict(Uniform=False, Longitudes=[0.0, 90.0, 180.0]), "full turn"),
+        (dict(Uniform=False, Longitudes=[0.0, 180.0, 360.0, 400.0]), "more than a full turn"),
         (dict(Radius=0.0), "radius"),
         (dict(AroundCount=0), "at least 1"),
         (dict(ProfileEnd=89.0), "axis"),

@@ -369,7 +369,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   if (ring.IsNull()) {
     r = defaultRingC1(shape, T);
   } else {
-    r = detail::normalisedRing(ring, shape.frame, T[n] - T[0], 2);
+    r = detail::normalisedRing(ring, shape.frame, T[n] - T[0], 2, 2 * M_PI);
     const std::vector<std::vector<double>> cuts = detail::ringCuts(r, out.knotsU);
     if (std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); })) {
       const detail::SplitPieces split = detail::splitBezierPieces(quartics, 5, out.knotsU, cuts);

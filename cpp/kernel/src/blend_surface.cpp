@@ -56,11 +56,13 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
 }
 
 Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
-                                            const Eigen::VectorXd& cuts, int degree) {
+                                            const Eigen::VectorXd& cuts, int degree, bool closed) {
   const int n = static_cast<int>(T.size()) - 1;
   auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
   if (ring.IsNull()) throw mismatch("no surface");
-  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (closed != ring->IsUPeriodic()) {
+    throw mismatch(closed ? "it must be periodic in u (closed around the axis)" : "it must be open in u, like the shape");
+  }
   if (ring->UDegree() != degree || ring->VDegree() != degree) {
     throw mismatch(degree == 3 ? "it must be bicubic" : "it must be biquadratic (degree 2 in u and v)");
   }
@@ -71,7 +73,7 @@ Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& r
   }
   const double period = T[n] - T[0];
   for (int i = 0; i <= n; ++i) {
-    if (i < n && ring->UMultiplicity(i + 1) != 1) throw mismatch("its u knots must be simple");
+    if (i > 0 && i < n && ring->UMultiplicity(i + 1) != 1) throw mismatch("its u knots must be simple");
     if (std::abs(ring->UKnot(i + 1) - T[i]) > 1e-9 * period) {
       std::ostringstream os;
       os << "u knot " << i << " is " << ring->UKnot(i + 1) << ", the interface needs " << T[i]
@@ -90,16 +92,22 @@ Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& r
 }
 
 Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
-                                           double period, int degree) {
+                                           double period, int degree, double turn) {
   auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  const bool closed = std::abs(turn - 2 * M_PI) <= 1e-9;
   if (ring.IsNull()) throw mismatch("no surface");
-  if (!ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (closed && !ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
+  if (!closed && (ring->IsUPeriodic() || ring->UMultiplicity(1) != degree + 1 ||
+                  ring->UMultiplicity(ring->NbUKnots()) != degree + 1)) {
+    throw mismatch("it must be clamped in u (open, like the shape's partial turn)");
+  }
   if (ring->UDegree() != degree || ring->VDegree() != degree) {
     throw mismatch(degree == 3 ? "it must be bicubic" : "it must be biquadratic (degree 2 in u and v)");
   }
   if (ring->VMultiplicity(1) != degree + 1) throw mismatch("it must be clamped in v (its first row is the interface)");
   const double u0 = ring->UKnot(1), P = ring->UKnot(ring->NbUKnots()) - u0, v0 = ring->VKnot(1);
-  // Winding number of the first row about the axis, from 64 samples per knot span.
+  // How far the first row turns about the axis (a winding number for a full turn), from 64
+  // samples per knot span, against the shape's turn.
   const int samples = 64 * (ring->NbUKnots() - 1);
   double turned = 0.0, previous = 0.0;
   for (int k = 0; k <= samples; ++k) {
@@ -109,9 +117,12 @@ Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ri
     if (k > 0) turned += std::remainder(angle - previous, 2 * M_PI);
     previous = angle;
   }
-  const double winding = turned / (2 * M_PI);
+  const double winding = turned / turn;
   if (std::abs(winding + 1) < 0.5) throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
-  if (std::abs(winding - 1) >= 0.5) throw mismatch("its first row does not go once around the shape's axis");
+  if (std::abs(winding - 1) >= 0.5) {
+    throw mismatch(closed ? "its first row does not go once around the shape's axis"
+                          : "its first row does not run along the shape's angles around the axis");
+  }
   Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
   TColStd_Array1OfReal knots(1, r->NbUKnots());
   for (int i = 1; i <= r->NbUKnots(); ++i) knots.SetValue(i, (r->UKnot(i) - u0) * period / P);
@@ -411,9 +422,7 @@ namespace {
 
 G2CircleSpline checkedLongitudes(const ShapeFrame& frame, const Eigen::VectorXd& longitudes) {
   frame.check();
-  G2CircleSpline lon = g2Circle(longitudes);
-  if (!lon.closed) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
-  return lon;
+  return g2Circle(longitudes);  // a full turn (closed in u) or a partial one (open)
 }
 
 /// The default free-form ring after a profile's end: 4 rows along the end tangent, the
@@ -429,22 +438,43 @@ Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleS
   if (!(base.x() > 0.05 * scale) || !(base.x() + 3 * step * p.tangent.x() > 0.05 * scale)) {
     throw InputError("the default ring would reach the axis: give a free-form net");
   }
-  TColgp_Array2OfPnt poles(1, n, 1, 4);
+  // Full turn: one pole per longitude, periodic. Partial turn: clamped, the end poles on the
+  // circle, the next ones along its tangent (a third of the end arc), one per inner longitude.
+  const int poleCount = lon.closed ? n : n + 3;
+  TColgp_Array2OfPnt poles(1, poleCount, 1, 4);
   BSplineCurve layout;
   for (int j = 0; j < 4; ++j) {
     const Eigen::Vector2d rz = base + j * step * p.tangent;
-    PointMatrix row(n, 3);
-    for (int i = 0; i < n; ++i) {
-      // Pushed out so that the spline passes near the circle of radius rz.x(): a uniform
-      // periodic cubic at a knot is (c_{i-1} + 4 c_i + c_{i+1}) / 6.
-      const double a = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(a));
-      const Eigen::Vector3d q = frame.origin +
-                                f * rz.x() * (std::cos(lon.theta[i]) * frame.x + std::sin(lon.theta[i]) * frame.y) +
+    auto at = [&](double theta, double radius) {
+      const Eigen::Vector3d q = frame.origin + radius * (std::cos(theta) * frame.x + std::sin(theta) * frame.y) +
                                 rz.y() * frame.z;
-      row.row(i) = q.transpose();
+      return Eigen::RowVector3d(q.transpose());
+    };
+    auto inner = [&](int i) {
+      // Pushed out so that the spline passes near the circle of radius rz.x(): a uniform
+      // cubic at a knot is (c_{i-1} + 4 c_i + c_{i+1}) / 6.
+      const double a = (lon.alpha[(i + n - 1) % n] + lon.alpha[i % n]) / 2, f = 3.0 / (2.0 + std::cos(a));
+      return at(lon.theta[i], f * rz.x());
+    };
+    PointMatrix row(poleCount, 3);
+    if (lon.closed) {
+      for (int i = 0; i < n; ++i) row.row(i) = inner(i);
+      layout = periodicCubic(row, knotsU);
+    } else {
+      const auto tangentAt = [&](double theta) {
+        const Eigen::Vector3d d = -std::sin(theta) * frame.x + std::cos(theta) * frame.y;
+        return Eigen::RowVector3d(d.transpose());
+      };
+      row.row(0) = at(lon.theta[0], rz.x());
+      row.row(1) = row.row(0) + rz.x() * lon.alpha[0] / 3 * tangentAt(lon.theta[0]);
+      for (int i = 1; i < n; ++i) row.row(i + 1) = inner(i);
+      row.row(n + 2) = at(lon.theta[n], rz.x());
+      row.row(n + 1) = row.row(n + 2) - rz.x() * lon.alpha[n - 1] / 3 * tangentAt(lon.theta[n]);
+      layout = clampedCubic(row, knotsU);
     }
-    layout = periodicCubic(row, knotsU);
-    for (int i = 0; i < n; ++i) poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0), layout.poles(i, 1), layout.poles(i, 2)));
+    for (int i = 0; i < poleCount; ++i) {
+      poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0), layout.poles(i, 1), layout.poles(i, 2)));
+    }
   }
   TColStd_Array1OfReal uKnots(1, static_cast<int>(layout.knots.size())), vKnots(1, 2);
   TColStd_Array1OfInteger uMults(1, static_cast<int>(layout.mults.size())), vMults(1, 2);
@@ -455,7 +485,7 @@ Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleS
   vKnots.SetValue(1, 0.0);
   vKnots.SetValue(2, 1.0);
   vMults.Init(4);
-  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3, true, false);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 3, 3, lon.closed, false);
 }
 
 /// Section 4.2 for a shape of revolution with its interface at the profile's end.
@@ -518,7 +548,7 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
   if (ring.IsNull()) {
     r = defaultRing(frame, lon, profile, T);
   } else {
-    r = normalisedRing(ring, frame, out.knotsU[out.knotsU.size() - 1], 3);
+    r = normalisedRing(ring, frame, out.knotsU[out.knotsU.size() - 1], 3, lon.theta[lon.pieces()] - lon.theta[0]);
     const std::vector<std::vector<double>> cuts = ringCuts(r, out.knotsU);
     const bool any = std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); });
     if (any) {
@@ -530,6 +560,7 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
   }
   r = withKnots(r, out.knotsU);
   out.piecesU = basic.layers.front().pieces();
+  out.closedU = lon.closed;
   out.basicC2InV = basic.c2InV;
   out.rowsBasic = basic.rows;
   const int dvBasic = basic.dv, spansV = r->NbVKnots() - 1;
@@ -594,10 +625,11 @@ BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& l
   // The same arc knots as the blend (sigma: one piece per arc).
   const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
   if (ring.IsNull()) ring = defaultRing(frame, lon, profile, T);
-  const Handle(Geom_BSplineSurface) r = matchRingStrict(ring, T, T, 3);
+  const Handle(Geom_BSplineSurface) r = matchRingStrict(ring, T, T, 3, lon.closed);
   BlendComplex out;
   out.knotsU = T;
   out.piecesU = lon.pieces();
+  out.closedU = lon.closed;
   out.rowsBasic = static_cast<int>(profile.cubic.size());
   out.rowsFreeForm = r->NbVKnots() - 1;
   out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
@@ -717,6 +749,7 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
   BlendComplex out;
   out.knotsU = arcKnots(circleToC2(a.lon, CircleReparam::Sigma));
   out.piecesU = a.lon.pieces();
+  out.closedU = a.lon.closed;
   out.rowsBasic = static_cast<int>(a.profile.cubic.size());
   out.rowsFreeForm = static_cast<int>(b.profile.cubic.size());
   out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
@@ -819,6 +852,7 @@ BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution
     os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.lon.pieces() << ")";
     throw InputError(os.str());
   }
+  if (a.lon.closed != b.lon.closed) throw InputError("both shapes need a full turn around the axis, or both a partial one");
   if (naive) return joinNaive(a, b);
   // Fig. 11: across the transition the scalars are averaged, betaT_i = sqrt(beta_i^top beta_i^bottom).
   const Eigen::VectorXd betaT = (a.lon.beta.array() * b.lon.beta.array()).sqrt().matrix();
@@ -838,6 +872,7 @@ BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution
   BlendComplex out;
   out.knotsU = tA / tA[ca.firstPiece[1]];  // the first arc has length 1, as arcKnots
   out.piecesU = ca.pieces();
+  out.closedU = a.lon.closed;
   out.basicC2InV = sexticInV;
   const std::vector<Homogeneous3>& rowsA = sexticInV ? a.profile.sextic : a.profile.cubic;
   const std::vector<Homogeneous3>& rowsB = sexticInV ? b.profile.sextic : b.profile.cubic;

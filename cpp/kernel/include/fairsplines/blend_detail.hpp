@@ -24,18 +24,20 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
 /// increasing, with a positive radius at each. Throws InputError naming the first offender.
 void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope);
 
-/// A free-form ring that must have exactly the knots T in u (one period): periodic, of the
+/// A free-form ring that must have exactly the knots T in u (one period): periodic (closed;
+/// else clamped), of the
 /// given degree in u and v with simple u knots, clamped in v; returned with `cuts` inserted.
 /// Throws InputError "the free-form net does not match the interface: ..." naming the problem.
 Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
-                                            const Eigen::VectorXd& cuts, int degree);
+                                            const Eigen::VectorXd& cuts, int degree, bool closed);
 
-/// A user ring's structure (periodic in u, of `degree` in u and v, clamped in v) and its
-/// first row going once around the frame's axis in the direction of u; returns a copy whose
-/// u period is mapped affinely onto [0, period] (its first knot to the shape's first angle).
+/// A user ring's structure (periodic in u for a full turn of the shape, `turn` = 2 pi, else
+/// clamped in u; of `degree` in u and v; clamped in v) and its first row turning about the
+/// frame's axis by about `turn` in the direction of u; returns a copy whose u range is mapped
+/// affinely onto [0, period] (its first knot to the shape's first angle).
 /// Throws InputError "the free-form net does not match the interface: ..." otherwise.
 Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
-                                           double period, int degree);
+                                           double period, int degree, double turn);
 
 /// The ring with every knot of `knotsU` it lacks inserted (each u-interval one Bézier span).
 Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU);
