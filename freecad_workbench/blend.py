@@ -7,10 +7,10 @@ paper, Section 4.2), and the naive baseline of Fig. 2a.
     result.shell     # Part.Shell of all patches, sewn
     result.surface   # one C2 Part.BSplineSurface of the complex (or None)
 
-Shapes of revolution over a full turn around their axis, joined at the end of their
-profile: SphereZone (top latitude), Cylinder and Cone (top height), Torus (last tube angle of
-an open range); or at its start (at="start"; chosen by itself for a dome, whose end is the
-pole).
+Shapes of revolution over a full turn around their axis or part of one, joined at the end
+of their profile: SphereZone (top latitude), Cylinder and Cone (top height), Torus (last
+tube angle of an open range); or at its start (at="start"; chosen by itself for a dome,
+whose end is the pole).
 
     dome = fw.shapes.SphereZone((0, 0, 3), 1, longitudes, [0.2, 0.9, math.pi / 2])
     post = fw.shapes.Cylinder((0, 0, 0), 1, longitudes, [0, 1, 2])
@@ -140,9 +140,10 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
 
 def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     """Basic shape to basic shape (Figs. 9, 11, 12): the end of shape_a's profile joined to
-    the start of shape_b's by one C2 transition row of degree (6,5); both stay exact. Both
-    need a full turn around their axis with the same number of arcs (the angles may differ:
-    the scalars are averaged, beta~ = sqrt(beta_a beta_b)). Returns a BlendResult; the
+    the start of shape_b's by one C2 transition row of degree (6,5) (C1: a (4,2) double
+    strip); both stay exact. Both need a full turn around their axis (or both a partial
+    one) with the same number of arcs (the angles may differ: the scalars are averaged,
+    beta~ = sqrt(beta_a beta_b)). Returns a BlendResult; the
     patches of both shapes are tagged 'basic'. shape_b should continue shape_a (its start
     beyond shape_a's end along the axis), else the strip folds back."""
     _check(shape_a, continuity, method)

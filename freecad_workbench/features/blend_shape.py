@@ -8,7 +8,7 @@ zebra shading so that the seams can be judged (gui/blend_commands.py).
     blend = make_blend_shape(doc, "Torus", MajorRadius=20, MinorRadius=5)
 
 The shape lies around the Z axis of the object's Placement. Angles are in degrees: around
-the axis a full turn (the partition may be non-uniform), along the profile latitudes
+the axis a full turn or part of one (the partition may be non-uniform), along the profile latitudes
 (sphere zone) or tube angles (torus); heights (cylinder, cone) are lengths. With `Uniform`
 on, the lists are generated from `AroundCount` arcs over the full turn and `ProfileCount`
 pieces from `ProfileStart` to `ProfileEnd`; off, the kind's lists are used as they are.
@@ -83,15 +83,15 @@ _PROPERTIES = (
     ("App::PropertyFloat", "Slope", "Cone: radius = Radius0 + Slope * height", None, 0),
     ("App::PropertyLength", "MajorRadius", "Torus: distance of the tube's centre from the axis", None, 0),
     ("App::PropertyLength", "MinorRadius", "Torus: radius of the tube", None, 0),
-    ("App::PropertyFloatList", "Longitudes", "Sphere zone: increasing angles around the axis over a full turn "
+    ("App::PropertyFloatList", "Longitudes", "Sphere zone: increasing angles around the axis, a full turn or part of one "
      "(degrees)", None, 0),
     ("App::PropertyFloatList", "Latitudes", "Sphere zone: increasing latitudes in [-90, 90] (degrees); the ring "
      "joins at the last", None, 0),
-    ("App::PropertyFloatList", "Angles", "Cylinder, cone: increasing angles around the axis over a full turn "
+    ("App::PropertyFloatList", "Angles", "Cylinder, cone: increasing angles around the axis, a full turn or part of one "
      "(degrees)", None, 0),
     ("App::PropertyFloatList", "Heights", "Cylinder, cone: increasing heights along the axis; the ring joins "
      "at the last", None, 0),
-    ("App::PropertyFloatList", "AnglesU", "Torus: increasing angles around the axis over a full turn (degrees)",
+    ("App::PropertyFloatList", "AnglesU", "Torus: increasing angles around the axis, a full turn or part of one (degrees)",
      None, 0),
     ("App::PropertyFloatList", "AnglesV", "Torus: increasing angles around the tube, 0 = outer equator, less "
      "than a full turn (degrees); the ring joins at the last", None, 0),
