@@ -1,9 +1,11 @@
 #include "fairsplines/parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "fairsplines/vectorise.hpp"
 
 namespace fairsplines {
 
@@ -14,6 +16,119 @@ Parametrization parseParametrization(const std::string& name) {
   throw InputError("unknown parametrization '" + name + "': use 'chordal', 'centripetal' or 'uniform'");
 }
 
+namespace {
+
+/// Throws InputError naming the first point that is not finite.
+[[noreturn]] void throwNotFinite(PointsRef q) {
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    if (!q.row(i).allFinite()) {
+      std::ostringstream msg;
+      msg << "point " << i << " is not finite (NaN or infinity)";
+      throw InputError(msg.str());
+    }
+  }
+  throw InputError("a point is not finite (NaN or infinity)");
+}
+
+/// Finiteness and bounding box of contiguous (n x D) points in one pass. The loops are
+/// branch-free so that they vectorise: four points at a time, each with its own
+/// running minimum and maximum, and a point is flagged when x - x is not 0 (NaN, inf).
+template <int D>
+FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index n, double* lo, double* hi) {
+  constexpr int L = 4 * D;  // four points per step
+  double l[L], h[L];
+  for (int c = 0; c < L; ++c) l[c] = h[c] = data[c % D];
+  int bad = 0;
+  Eigen::Index i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const double* p = data + D * i;
+    for (int c = 0; c < L; ++c) {
+      l[c] = p[c] < l[c] ? p[c] : l[c];
+      h[c] = p[c] > h[c] ? p[c] : h[c];
+      bad |= !(p[c] - p[c] == 0.0);
+    }
+  }
+  for (; i < n; ++i) {
+    for (int c = 0; c < D; ++c) {
+      const double x = data[D * i + c];
+      l[c] = x < l[c] ? x : l[c];
+      h[c] = x > h[c] ? x : h[c];
+      bad |= !(x - x == 0.0);
+    }
+  }
+  for (int c = 0; c < D; ++c) {
+    lo[c] = l[c];
+    hi[c] = h[c];
+    for (int k = 1; k < 4; ++k) {
+      lo[c] = std::min(lo[c], l[k * D + c]);
+      hi[c] = std::max(hi[c], h[k * D + c]);
+    }
+  }
+  return bad == 0;
+}
+
+/// Chord lengths |q_{i+1} - q_i| of contiguous (n x D) points, i < n - 1, in a loop
+/// without branches (it vectorises). Says whether any is <= tol.
+template <int D>
+FAIRSPLINES_VECTORISE bool openChords(const double* __restrict data, Eigen::Index n, double tol,
+                                      double* __restrict chords) {
+  int close = 0;
+  for (Eigen::Index i = 0; i + 1 < n; ++i) {
+    double squared = 0.0;
+    for (int c = 0; c < D; ++c) {
+      const double d = data[D * (i + 1) + c] - data[D * i + c];
+      squared += d * d;
+    }
+    chords[i] = std::sqrt(squared);
+    close |= chords[i] <= tol;
+  }
+  return close != 0;
+}
+
+template <int D>
+SampleInfo validateContiguous(PointsRef q, bool closed) {
+  const Eigen::Index n = q.rows();
+  const double* data = q.data();
+  double lo[D], hi[D];
+  if (!finiteBox<D>(data, n, lo, hi)) throwNotFinite(q);
+  // Coincidence is judged relative to the size of the data.
+  SampleInfo info;
+  double squared = 0.0, largest = 0.0;
+  for (int c = 0; c < D; ++c) {
+    squared += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    largest = std::max(largest, std::max(std::abs(lo[c]), std::abs(hi[c])));
+  }
+  info.size = std::sqrt(squared);
+  if (info.size <= 1e-300 || info.size <= 1e-14 * largest) throw InputError("all points coincide");
+  const double tol = 1e-12 * info.size;
+  const Eigen::Index segments = closed ? n : n - 1;
+  info.chords.resize(segments);
+  bool close = openChords<D>(data, n, tol, info.chords.data());
+  if (closed) {
+    double last = 0.0;
+    for (int c = 0; c < D; ++c) {
+      const double d = data[c] - data[D * (n - 1) + c];
+      last += d * d;
+    }
+    info.chords[n - 1] = std::sqrt(last);
+    close |= info.chords[n - 1] <= tol;
+  }
+  if (close) {  // name the first pair
+    for (Eigen::Index i = 0; i < segments; ++i) {
+      if (info.chords[i] <= tol) {
+        const Eigen::Index j = i + 1 == n ? 0 : i + 1;
+        std::ostringstream msg;
+        msg << "points " << i << " and " << j << " coincide";
+        if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
+        throw InputError(msg.str());
+      }
+    }
+  }
+  return info;
+}
+
+}  // namespace
+
 SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
@@ -21,49 +136,15 @@ SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* 
     msg << "points must have 2 or 3 coordinates, got " << q.cols();
     throw InputError(msg.str());
   }
-  if (n < minPoints) {
+  if (n < minPoints || n < 1) {
     std::ostringstream msg;
     msg << method << " needs at least " << minPoints << (closed ? " points on a closed curve" : " points")
         << ", got " << n;
     throw InputError(msg.str());
   }
-  if (!q.allFinite()) {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (!q.row(i).allFinite()) {
-        std::ostringstream msg;
-        msg << "point " << i << " is not finite (NaN or infinity)";
-        throw InputError(msg.str());
-      }
-    }
-  }
-  // Coincidence is judged relative to the size of the data.
-  const Eigen::RowVectorXd lo = q.colwise().minCoeff(), hi = q.colwise().maxCoeff();
-  SampleInfo info;
-  info.size = (hi - lo).norm();
-  if (info.size <= 1e-300 || info.size <= 1e-14 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())) {
-    throw InputError("all points coincide");
-  }
-  const double tol = 1e-12 * info.size;
-  const Eigen::Index segments = closed ? n : n - 1;
-  info.chords.resize(segments);
-  const int dim = static_cast<int>(q.cols());
-  const double* data = q.data();
-  for (Eigen::Index i = 0; i < segments; ++i) {
-    const Eigen::Index j = i + 1 == n ? 0 : i + 1;
-    double squared = 0.0;
-    for (int c = 0; c < dim; ++c) {
-      const double d = data[dim * j + c] - data[dim * i + c];
-      squared += d * d;
-    }
-    info.chords[i] = std::sqrt(squared);
-    if (info.chords[i] <= tol) {
-      std::ostringstream msg;
-      msg << "points " << i << " and " << j << " coincide";
-      if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
-      throw InputError(msg.str());
-    }
-  }
-  return info;
+  // The passes read rows as one contiguous block (as numpy's C order gives them).
+  if (q.outerStride() != q.cols()) return validateSamples(PointMatrix(q), closed, minPoints, method);
+  return q.cols() == 2 ? validateContiguous<2>(q, closed) : validateContiguous<3>(q, closed);
 }
 
 Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
