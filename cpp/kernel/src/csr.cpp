@@ -398,7 +398,7 @@ WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
 /// The vectorised strategy over all samples (contiguous rows), writing the poles in
 /// place: open data n + 2 rows (clamped), closed data n rows in OCCT's periodic order
 /// (row r holds c_{r+1}, see periodicCubic).
-void csrPolesWindowed(PointsRef q, const Eigen::VectorXd& t, bool closed, const Weight& weight, bool quasiOnly,
+void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& weight, bool quasiOnly,
                       Eigen::Index window, double* out) {
   const Eigen::Index n = q.rows(), dim = q.cols();
   const WindowFunction solve = windowFunction(static_cast<int>(dim), weight.rule, quasiOnly);
@@ -408,7 +408,7 @@ void csrPolesWindowed(PointsRef q, const Eigen::VectorXd& t, bool closed, const 
     const WindowArrays a = workspace.arrays(W);
     for (Eigen::Index s = 0;; s += W - 4) {
       s = std::min(s, n - W);
-      for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];
+      for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];  // as csrPoles's h
       const bool atStart = s == 0, atEnd = s + W == n;
       // Local rows 3..W-2 are the poles of points 2..W-3; global row = s + local row.
       solve(q.data() + dim * s, a, W, weight.epsilon, out, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
@@ -436,42 +436,51 @@ void csrPolesWindowed(PointsRef q, const Eigen::VectorXd& t, bool closed, const 
 }  // namespace
 
 CsrStrategy defaultStrategy(Eigen::Index n) {
-  // Measured with bench/bench_csr: the vectorised passes win from a few hundred points
-  // (their scratch memory is reused, so it costs nothing per call).
+  // Measured: the vectorised passes are about 3x faster from 100 points on (their scratch
+  // memory is reused, so it costs nothing per call); the streaming pass stays the
+  // reference for small data.
   return n >= kVectorisedFrom ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
+}
+
+void cubicPolesInto(PointsRef q, const double* t, bool closed, double size, double epsilon, EpsilonRule rule,
+                    bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window, double* poles) {
+  if (q.outerStride() != q.cols()) {  // the passes read rows as one contiguous block
+    cubicPolesInto(PointMatrix(q), t, closed, size, epsilon, rule, quasiOnly, strategy, window, poles);
+    return;
+  }
+  const Weight weight{epsilon / size, rule};
+  const Eigen::Index n = q.rows();
+  if (strategy.value_or(defaultStrategy(n)) == CsrStrategy::Vectorised) {
+    csrPolesWindowed(q, t, closed, weight, quasiOnly, window <= 0 ? kWindow : window, poles);
+    return;
+  }
+  const Eigen::Map<const Eigen::VectorXd> tv(t, closed ? n + 1 : n);
+  const Eigen::VectorXd h = tv.tail(tv.size() - 1) - tv.head(tv.size() - 1);
+  PointMatrix p;
+  if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, p);
+  else csrPoles<3>(q, h, closed, weight, quasiOnly, p);
+  Eigen::Map<PointMatrix> out(poles, p.rows(), p.cols());
+  if (closed) {
+    // OCCT's periodic pole j belongs to the basis function starting at knot j - 1: row
+    // j holds c_{j+1} (see periodicCubic).
+    for (Eigen::Index j = 0; j < n; ++j) out.row(j) = p.row((j + 1) % n);
+  } else {
+    out = p;
+  }
 }
 
 BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, double epsilon, EpsilonRule rule,
                       bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window) {
-  if (q.outerStride() != q.cols()) {  // the passes read rows as one contiguous block
-    return fitCubic(PointMatrix(q), std::move(t), closed, size, epsilon, rule, quasiOnly, strategy, window);
-  }
-  const Weight weight{epsilon / size, rule};
-  const Eigen::Index n = q.rows();
   // The curve is built in place: poles written where they stay, the parameters moved
-  // into the knots (periodicCubic / clampedCubic's layout).
+  // into the knots (clampedCubic / periodicCubic's layout).
+  const Eigen::Index n = q.rows();
   BSplineCurve curve;
   curve.degree = 3;
   curve.periodic = closed;
   curve.poles.resize(closed ? n : n + 2, q.cols());
+  cubicPolesInto(q, t.data(), closed, size, epsilon, rule, quasiOnly, strategy, window, curve.poles.data());
   curve.mults = Eigen::VectorXi::Ones(t.size());
   if (!closed) curve.mults[0] = curve.mults[t.size() - 1] = 4;
-  if (strategy.value_or(defaultStrategy(n)) == CsrStrategy::Vectorised) {
-    if (window <= 0) window = kWindow;
-    csrPolesWindowed(q, t, closed, weight, quasiOnly, window, curve.poles.data());
-  } else {
-    const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
-    PointMatrix poles;
-    if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
-    else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
-    if (closed) {
-      // OCCT's periodic pole j belongs to the basis function starting at knot j - 1: row
-      // j holds c_{j+1} (see periodicCubic).
-      for (Eigen::Index j = 0; j < n; ++j) curve.poles.row(j) = poles.row((j + 1) % n);
-    } else {
-      curve.poles = std::move(poles);
-    }
-  }
   curve.knots = std::move(t);
   return curve;
 }
@@ -512,12 +521,17 @@ PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed,
 }  // namespace detail
 
 BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
-  const SampleInfo info = validateSamples(q, options.closed, 3, "the csr-spline");
-  Eigen::VectorXd t = options.parameters.size() > 0
-                                ? validatedParameters(options.parameters, q.rows(), options.closed)
-                                : parameters(info.chords, options.parametrization);
+  const Eigen::Index n = q.rows(), segments = options.closed ? n : n - 1;
+  // The chords are written where the parameters go and turned into them in place.
+  Eigen::VectorXd t(std::max<Eigen::Index>(segments + 1, 1));
+  const double size = detail::validateSamplesInto(q, options.closed, 3, "the csr-spline", t.data() + 1);
+  if (options.parameters.size() > 0) {
+    t = validatedParameters(options.parameters, n, options.closed);
+  } else {
+    detail::parametersInto(t.data() + 1, segments, options.parametrization, t.data());
+  }
   if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
-  return detail::fitCubic(q, std::move(t), options.closed, info.size, options.epsilon, options.rule, false);
+  return detail::fitCubic(q, std::move(t), options.closed, size, options.epsilon, options.rule, false);
 }
 
 BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {

@@ -85,37 +85,36 @@ FAIRSPLINES_VECTORISE bool openChords(const double* __restrict data, Eigen::Inde
   return close != 0;
 }
 
+/// Validation of contiguous rows; chords to `chords` (room for n values). Returns the size.
 template <int D>
-SampleInfo validateContiguous(PointsRef q, bool closed) {
+double validateContiguous(PointsRef q, bool closed, double* chords) {
   const Eigen::Index n = q.rows();
   const double* data = q.data();
   double lo[D], hi[D];
   if (!finiteBox<D>(data, n, lo, hi)) throwNotFinite(q);
   // Coincidence is judged relative to the size of the data.
-  SampleInfo info;
   double squared = 0.0, largest = 0.0;
   for (int c = 0; c < D; ++c) {
     squared += (hi[c] - lo[c]) * (hi[c] - lo[c]);
     largest = std::max(largest, std::max(std::abs(lo[c]), std::abs(hi[c])));
   }
-  info.size = std::sqrt(squared);
-  if (info.size <= 1e-300 || info.size <= 1e-14 * largest) throw InputError("all points coincide");
-  const double tol = 1e-12 * info.size;
+  const double size = std::sqrt(squared);
+  if (size <= 1e-300 || size <= 1e-14 * largest) throw InputError("all points coincide");
+  const double tol = 1e-12 * size;
   const Eigen::Index segments = closed ? n : n - 1;
-  info.chords.resize(segments);
-  bool close = openChords<D>(data, n, tol, info.chords.data());
+  bool close = openChords<D>(data, n, tol, chords);
   if (closed) {
     double last = 0.0;
     for (int c = 0; c < D; ++c) {
       const double d = data[c] - data[D * (n - 1) + c];
       last += d * d;
     }
-    info.chords[n - 1] = std::sqrt(last);
-    close |= info.chords[n - 1] <= tol;
+    chords[n - 1] = std::sqrt(last);
+    close |= chords[n - 1] <= tol;
   }
   if (close) {  // name the first pair
     for (Eigen::Index i = 0; i < segments; ++i) {
-      if (info.chords[i] <= tol) {
+      if (chords[i] <= tol) {
         const Eigen::Index j = i + 1 == n ? 0 : i + 1;
         std::ostringstream msg;
         msg << "points " << i << " and " << j << " coincide";
@@ -124,12 +123,14 @@ SampleInfo validateContiguous(PointsRef q, bool closed) {
       }
     }
   }
-  return info;
+  return size;
 }
 
 }  // namespace
 
-SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
+namespace detail {
+
+double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
     std::ostringstream msg;
@@ -143,19 +144,33 @@ SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* 
     throw InputError(msg.str());
   }
   // The passes read rows as one contiguous block (as numpy's C order gives them).
-  if (q.outerStride() != q.cols()) return validateSamples(PointMatrix(q), closed, minPoints, method);
-  return q.cols() == 2 ? validateContiguous<2>(q, closed) : validateContiguous<3>(q, closed);
+  if (q.outerStride() != q.cols()) return validateSamplesInto(PointMatrix(q), closed, minPoints, method, chords);
+  return q.cols() == 2 ? validateContiguous<2>(q, closed, chords) : validateContiguous<3>(q, closed, chords);
 }
 
-Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
-  Eigen::VectorXd t(chords.size() + 1);
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t) {
+  // Reads chord i before writing t[i + 1]: chords may be t + 1.
   t[0] = 0.0;
-  for (Eigen::Index i = 0; i < chords.size(); ++i) {
+  for (Eigen::Index i = 0; i < count; ++i) {
     double h = 1.0;
     if (kind == Parametrization::Chordal) h = chords[i];
     else if (kind == Parametrization::Centripetal) h = std::sqrt(chords[i]);
     t[i + 1] = t[i] + h;
   }
+}
+
+}  // namespace detail
+
+SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
+  SampleInfo info;
+  info.chords.resize(std::max<Eigen::Index>(closed ? q.rows() : q.rows() - 1, 0));
+  info.size = detail::validateSamplesInto(q, closed, minPoints, method, info.chords.data());
+  return info;
+}
+
+Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
+  Eigen::VectorXd t(chords.size() + 1);
+  detail::parametersInto(chords.data(), chords.size(), kind, t.data());
   return t;
 }
 

@@ -12,7 +12,7 @@ namespace fairsplines::detail {
 enum class CsrStrategy { Streaming, Vectorised };
 
 /// From this many samples fitCubic picks the vectorised strategy; its window length.
-constexpr Eigen::Index kVectorisedFrom = 256, kWindow = 2048;
+constexpr Eigen::Index kVectorisedFrom = 128, kWindow = 2048;
 
 /// The strategy fitCubic picks for n samples.
 CsrStrategy defaultStrategy(Eigen::Index n);
@@ -25,5 +25,10 @@ CsrStrategy defaultStrategy(Eigen::Index n);
 BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, double epsilon,
                       EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy = std::nullopt,
                       Eigen::Index window = 0);
+
+/// The poles of fitCubic written to `poles` (contiguous rows of q's width: n + 2 for open
+/// data, n for closed data in OCCT's periodic order); t holds n parameters (n + 1 closed).
+void cubicPolesInto(PointsRef q, const double* t, bool closed, double size, double epsilon, EpsilonRule rule,
+                    bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window, double* poles);
 
 }  // namespace fairsplines::detail

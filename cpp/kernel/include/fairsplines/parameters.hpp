@@ -32,4 +32,15 @@ Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed);
 /// increasing. Returns them; throws InputError naming the first bad one.
 Eigen::VectorXd validatedParameters(const Eigen::VectorXd& t, Eigen::Index n, bool closed);
 
+namespace detail {
+
+/// validateSamples writing the chords to `chords` (room for one per segment: n - 1, or n
+/// when closed) instead of a new vector. Returns the bounding-box diagonal.
+double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
+
+/// parameters() into t (count + 1 values); chords may be t + 1 (computed in place).
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t);
+
+}  // namespace detail
+
 }  // namespace fairsplines
