@@ -30,58 +30,49 @@ namespace {
   throw InputError("a point is not finite (NaN or infinity)");
 }
 
-/// Finiteness and bounding box of contiguous (n x D) points in one pass. The loops are
-/// branch-free so that they vectorise: four points at a time, each with its own
-/// running minimum and maximum, and a point is flagged when x - x is not 0 (NaN, inf).
+/// One pass over contiguous (n x D) points: their bounding box, whether all are finite
+/// (x - x is 0 exactly for finite x), and the chords |q_{i+1} - q_i|, i < n - 1. The loop
+/// has no branch and its reductions are declared to the compiler (OpenMP SIMD: min and
+/// max are exact in any order), so it vectorises.
 template <int D>
-FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index n, double* lo, double* hi) {
-  constexpr int L = 4 * D;  // four points per step
-  double l[L], h[L];
-  for (int c = 0; c < L; ++c) l[c] = h[c] = data[c % D];
+FAIRSPLINES_VECTORISE bool boxAndChords(const double* __restrict data, Eigen::Index n, double* lo, double* hi,
+                                        double* __restrict chords) {
+  double lx = data[0], ly = data[1], lz = data[D - 1], hx = lx, hy = ly, hz = lz;
   int bad = 0;
-  Eigen::Index i = 0;
-  for (; i + 4 <= n; i += 4) {
+#pragma omp simd reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) reduction(| : bad)
+  for (Eigen::Index i = 0; i < n - 1; ++i) {
     const double* p = data + D * i;
-    for (int c = 0; c < L; ++c) {
-      l[c] = p[c] < l[c] ? p[c] : l[c];
-      h[c] = p[c] > h[c] ? p[c] : h[c];
-      bad |= !(p[c] - p[c] == 0.0);
+    const double x = p[0], y = p[1], dx = p[D] - x, dy = p[D + 1] - y;
+    lx = std::min(lx, x);
+    hx = std::max(hx, x);
+    ly = std::min(ly, y);
+    hy = std::max(hy, y);
+    bad |= (x - x != 0.0) | (y - y != 0.0);
+    double squared = dx * dx + dy * dy;
+    if constexpr (D == 3) {
+      const double z = p[2], dz = p[D + 2] - z;
+      lz = std::min(lz, z);
+      hz = std::max(hz, z);
+      bad |= z - z != 0.0;
+      squared += dz * dz;
     }
+    chords[i] = std::sqrt(squared);
   }
-  for (; i < n; ++i) {
-    for (int c = 0; c < D; ++c) {
-      const double x = data[D * i + c];
-      l[c] = x < l[c] ? x : l[c];
-      h[c] = x > h[c] ? x : h[c];
-      bad |= !(x - x == 0.0);
-    }
-  }
+  const double* last = data + D * (n - 1);
+  double l[3] = {lx, ly, lz}, h[3] = {hx, hy, hz};
   for (int c = 0; c < D; ++c) {
-    lo[c] = l[c];
-    hi[c] = h[c];
-    for (int k = 1; k < 4; ++k) {
-      lo[c] = std::min(lo[c], l[k * D + c]);
-      hi[c] = std::max(hi[c], h[k * D + c]);
-    }
+    lo[c] = std::min(l[c], last[c]);
+    hi[c] = std::max(h[c], last[c]);
+    bad |= last[c] - last[c] != 0.0;
   }
   return bad == 0;
 }
 
-/// Chord lengths |q_{i+1} - q_i| of contiguous (n x D) points, i < n - 1, in a loop
-/// without branches (it vectorises). Says whether any is <= tol.
-template <int D>
-FAIRSPLINES_VECTORISE bool openChords(const double* __restrict data, Eigen::Index n, double tol,
-                                      double* __restrict chords) {
+/// Whether any of the first m chords is <= tol (a reduction without branches).
+FAIRSPLINES_VECTORISE bool anyAtMost(const double* __restrict chords, Eigen::Index m, double tol) {
   int close = 0;
-  for (Eigen::Index i = 0; i + 1 < n; ++i) {
-    double squared = 0.0;
-    for (int c = 0; c < D; ++c) {
-      const double d = data[D * (i + 1) + c] - data[D * i + c];
-      squared += d * d;
-    }
-    chords[i] = std::sqrt(squared);
-    close |= chords[i] <= tol;
-  }
+#pragma omp simd reduction(| : close)
+  for (Eigen::Index i = 0; i < m; ++i) close |= chords[i] <= tol;
   return close != 0;
 }
 
@@ -91,7 +82,7 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
   const Eigen::Index n = q.rows();
   const double* data = q.data();
   double lo[D], hi[D];
-  if (!finiteBox<D>(data, n, lo, hi)) throwNotFinite(q);
+  if (!boxAndChords<D>(data, n, lo, hi, chords)) throwNotFinite(q);
   // Coincidence is judged relative to the size of the data.
   double squared = 0.0, largest = 0.0;
   for (int c = 0; c < D; ++c) {
@@ -102,7 +93,6 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
   if (size <= 1e-300 || size <= 1e-14 * largest) throw InputError("all points coincide");
   const double tol = 1e-12 * size;
   const Eigen::Index segments = closed ? n : n - 1;
-  bool close = openChords<D>(data, n, tol, chords);
   if (closed) {
     double last = 0.0;
     for (int c = 0; c < D; ++c) {
@@ -110,8 +100,8 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
       last += d * d;
     }
     chords[n - 1] = std::sqrt(last);
-    close |= chords[n - 1] <= tol;
   }
+  const bool close = anyAtMost(chords, segments, tol);
   if (close) {  // name the first pair
     for (Eigen::Index i = 0; i < segments; ++i) {
       if (chords[i] <= tol) {
