@@ -395,6 +395,12 @@ WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
   return quasiOnly ? window3Quasi : rule == EpsilonRule::Additive ? window3Additive : window3Case;
 }
 
+/// The window scratch of this thread.
+Workspace& threadWorkspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
+
 /// The vectorised strategy over all samples (contiguous rows), writing the poles in
 /// place: open data n + 2 rows (clamped), closed data n rows in OCCT's periodic order
 /// (row r holds c_{r+1}, see periodicCubic).
@@ -402,7 +408,7 @@ void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& w
                       Eigen::Index window, double* out) {
   const Eigen::Index n = q.rows(), dim = q.cols();
   const WindowFunction solve = windowFunction(static_cast<int>(dim), weight.rule, quasiOnly);
-  thread_local Workspace workspace;
+  Workspace& workspace = threadWorkspace();
   if (!closed) {
     const Eigen::Index W = std::min(n, std::max<Eigen::Index>(window, 8));
     const WindowArrays a = workspace.arrays(W);
@@ -518,20 +524,57 @@ PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed,
   return m;
 }
 
+void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles) {
+  const Eigen::Index n = q.rows(), dim = q.cols();
+  const bool fused = !options.closed && options.parameters.size() == 0 && options.epsilon > 0.0 &&
+                     (dim == 2 || dim == 3) && q.outerStride() == dim && n >= kVectorisedFrom;
+  if (!fused) {
+    const Eigen::Index segments = options.closed ? n : n - 1;
+    // The chords are written where the parameters go and turned into them in place.
+    const double size = validateSamplesInto(q, options.closed, 3, "the csr-spline", t + 1);
+    if (options.parameters.size() > 0) {
+      const Eigen::VectorXd given = validatedParameters(options.parameters, n, options.closed);
+      std::copy(given.data(), given.data() + given.size(), t);
+    } else {
+      parametersInto(t + 1, segments, options.parametrization, t);
+    }
+    if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
+    cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
+    return;
+  }
+  // Open data in one streaming pass after the bounding box: each window's chords and
+  // parameters are computed just before its poles, while its points are in cache. The
+  // checks, their order and every value are those of the path above.
+  const double size = openSampleSize(q, 3, "the csr-spline");
+  const WindowFunction solve = windowFunction(static_cast<int>(dim), options.rule, false);
+  const Eigen::Index W = std::min(n, kWindow);
+  const WindowArrays a = threadWorkspace().arrays(W);
+  Eigen::Index known = 0;  // t[0..known] are computed (none yet)
+  for (Eigen::Index s = 0;; s += W - 4) {
+    s = std::min(s, n - W);
+    extendParameters(q, known, s + W - 1, options.parametrization, size, t);
+    known = s + W - 1;
+    for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];
+    const bool atStart = s == 0, atEnd = s + W == n;
+    solve(q.data() + dim * s, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
+    if (atEnd) break;
+  }
+}
+
 }  // namespace detail
 
 BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
-  const Eigen::Index n = q.rows(), segments = options.closed ? n : n - 1;
-  // The chords are written where the parameters go and turned into them in place.
-  Eigen::VectorXd t(std::max<Eigen::Index>(segments + 1, 1));
-  const double size = detail::validateSamplesInto(q, options.closed, 3, "the csr-spline", t.data() + 1);
-  if (options.parameters.size() > 0) {
-    t = validatedParameters(options.parameters, n, options.closed);
-  } else {
-    detail::parametersInto(t.data() + 1, segments, options.parametrization, t.data());
-  }
-  if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
-  return detail::fitCubic(q, std::move(t), options.closed, size, options.epsilon, options.rule, false);
+  // The curve is built in place (clampedCubic / periodicCubic's layout).
+  const Eigen::Index n = q.rows(), knots = std::max<Eigen::Index>(options.closed ? n + 1 : n, 1);
+  BSplineCurve curve;
+  curve.degree = 3;
+  curve.periodic = options.closed;
+  curve.knots.resize(knots);
+  curve.poles.resize(std::max<Eigen::Index>(options.closed ? n : n + 2, 0), q.cols());
+  detail::csrSplineInto(q, options, curve.knots.data(), curve.poles.data());
+  curve.mults = Eigen::VectorXi::Ones(knots);
+  if (!options.closed) curve.mults[0] = curve.mults[knots - 1] = 4;
+  return curve;
 }
 
 BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {

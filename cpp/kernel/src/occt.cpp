@@ -46,8 +46,8 @@ Handle(Geom_BSplineCurve) toOcct(const BSplineCurve& curve) {
 }
 
 Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options) {
-  // 2D poles need a z column and explicit parameters a copy: the plain route.
-  if (q.cols() != 3 || options.parameters.size() > 0) return toOcct(csrSpline(q, options));
+  // 2D poles need a z column: the plain route.
+  if (q.cols() != 3) return toOcct(csrSpline(q, options));
   struct Scratch {
     std::vector<double> t, poles;
     std::vector<int> mults;
@@ -56,18 +56,13 @@ Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options) 
   const bool closed = options.closed;
   const Eigen::Index n = q.rows(), segments = closed ? n : n - 1, knots = segments + 1;
   const Eigen::Index poles = closed ? n : n + 2;
-  if (n < 1) return toOcct(csrSpline(q, options));  // the error message
+  if (n < 3) return toOcct(csrSpline(q, options));  // the error message
   // Grow only: resize value-initialises the new part once, later fits reuse it.
   if (scratch.t.size() < static_cast<size_t>(knots)) scratch.t.resize(knots);
   if (scratch.poles.size() < static_cast<size_t>(3 * poles)) scratch.poles.resize(3 * poles);
   if (scratch.mults.size() < static_cast<size_t>(knots)) scratch.mults.resize(knots);
   double* t = scratch.t.data();
-  // As csrSpline: chords where the parameters go, turned into them in place.
-  const double size = detail::validateSamplesInto(q, closed, 3, "the csr-spline", t + 1);
-  detail::parametersInto(t + 1, segments, options.parametrization, t);
-  if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
-  detail::cubicPolesInto(q, t, closed, size, options.epsilon, options.rule, false, std::nullopt, 0,
-                         scratch.poles.data());
+  detail::csrSplineInto(q, options, t, scratch.poles.data());
   int* m = scratch.mults.data();
   std::fill(m, m + knots, 1);
   if (!closed) m[0] = m[knots - 1] = 4;

@@ -76,13 +76,53 @@ FAIRSPLINES_VECTORISE bool anyAtMost(const double* __restrict chords, Eigen::Ind
   return close != 0;
 }
 
-/// Validation of contiguous rows; chords to `chords` (room for n values). Returns the size.
+/// Bounding box and finiteness alone (for passes that compute the chords later).
 template <int D>
-double validateContiguous(PointsRef q, bool closed, double* chords) {
-  const Eigen::Index n = q.rows();
-  const double* data = q.data();
-  double lo[D], hi[D];
-  if (!boxAndChords<D>(data, n, lo, hi, chords)) throwNotFinite(q);
+FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index n, double* lo, double* hi) {
+  double lx = data[0], ly = data[1], lz = data[D - 1], hx = lx, hy = ly, hz = lz;
+  int bad = 0;
+#pragma omp simd reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) reduction(| : bad)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double* p = data + D * i;
+    const double x = p[0], y = p[1];
+    lx = std::min(lx, x);
+    hx = std::max(hx, x);
+    ly = std::min(ly, y);
+    hy = std::max(hy, y);
+    bad |= (x - x != 0.0) | (y - y != 0.0);
+    if constexpr (D == 3) {
+      const double z = p[2];
+      lz = std::min(lz, z);
+      hz = std::max(hz, z);
+      bad |= z - z != 0.0;
+    }
+  }
+  const double l[3] = {lx, ly, lz}, h[3] = {hx, hy, hz};
+  for (int c = 0; c < D; ++c) {
+    lo[c] = l[c];
+    hi[c] = h[c];
+  }
+  return bad == 0;
+}
+
+/// The chords of segments from..to-1 (point i to i + 1) to chords[0..to-from-1].
+template <int D>
+FAIRSPLINES_VECTORISE void chordsOf(const double* __restrict data, Eigen::Index from, Eigen::Index to,
+                                    double* __restrict chords) {
+  for (Eigen::Index i = from; i < to; ++i) {
+    const double* p = data + D * i;
+    double squared = 0.0;
+    for (int c = 0; c < D; ++c) {
+      const double d = p[D + c] - p[c];
+      squared += d * d;
+    }
+    chords[i - from] = std::sqrt(squared);
+  }
+}
+
+/// The bounding-box diagonal, or InputError when all points coincide.
+template <int D>
+double checkedSize(const double* lo, const double* hi) {
   // Coincidence is judged relative to the size of the data.
   double squared = 0.0, largest = 0.0;
   for (int c = 0; c < D; ++c) {
@@ -91,6 +131,25 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
   }
   const double size = std::sqrt(squared);
   if (size <= 1e-300 || size <= 1e-14 * largest) throw InputError("all points coincide");
+  return size;
+}
+
+/// InputError naming points i and j as coincident.
+[[noreturn]] void throwCoincide(Eigen::Index i, Eigen::Index j, bool closed) {
+  std::ostringstream msg;
+  msg << "points " << i << " and " << j << " coincide";
+  if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
+  throw InputError(msg.str());
+}
+
+/// Validation of contiguous rows; chords to `chords` (room for n values). Returns the size.
+template <int D>
+double validateContiguous(PointsRef q, bool closed, double* chords) {
+  const Eigen::Index n = q.rows();
+  const double* data = q.data();
+  double lo[D], hi[D];
+  if (!boxAndChords<D>(data, n, lo, hi, chords)) throwNotFinite(q);
+  const double size = checkedSize<D>(lo, hi);
   const double tol = 1e-12 * size;
   const Eigen::Index segments = closed ? n : n - 1;
   if (closed) {
@@ -104,13 +163,7 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
   const bool close = anyAtMost(chords, segments, tol);
   if (close) {  // name the first pair
     for (Eigen::Index i = 0; i < segments; ++i) {
-      if (chords[i] <= tol) {
-        const Eigen::Index j = i + 1 == n ? 0 : i + 1;
-        std::ostringstream msg;
-        msg << "points " << i << " and " << j << " coincide";
-        if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
-        throw InputError(msg.str());
-      }
+      if (chords[i] <= tol) throwCoincide(i, i + 1 == n ? 0 : i + 1, closed);
     }
   }
   return size;
@@ -120,7 +173,9 @@ double validateContiguous(PointsRef q, bool closed, double* chords) {
 
 namespace detail {
 
-double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords) {
+namespace {
+
+void checkShape(PointsRef q, bool closed, int minPoints, const char* method) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
     std::ostringstream msg;
@@ -133,14 +188,47 @@ double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* 
         << ", got " << n;
     throw InputError(msg.str());
   }
+}
+
+}  // namespace
+
+double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords) {
+  checkShape(q, closed, minPoints, method);
   // The passes read rows as one contiguous block (as numpy's C order gives them).
   if (q.outerStride() != q.cols()) return validateSamplesInto(PointMatrix(q), closed, minPoints, method, chords);
   return q.cols() == 2 ? validateContiguous<2>(q, closed, chords) : validateContiguous<3>(q, closed, chords);
 }
 
-void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t) {
+double openSampleSize(PointsRef q, int minPoints, const char* method) {
+  checkShape(q, false, minPoints, method);
+  if (q.outerStride() != q.cols()) return openSampleSize(PointMatrix(q), minPoints, method);
+  double lo[3], hi[3];
+  const bool finite = q.cols() == 2 ? finiteBox<2>(q.data(), q.rows(), lo, hi) : finiteBox<3>(q.data(), q.rows(), lo, hi);
+  if (!finite) throwNotFinite(q);
+  return q.cols() == 2 ? checkedSize<2>(lo, hi) : checkedSize<3>(lo, hi);
+}
+
+void extendParameters(PointsRef q, Eigen::Index from, Eigen::Index to, Parametrization kind, double size, double* t) {
+  const double tol = 1e-12 * size;
+  constexpr Eigen::Index kChunk = 512;
+  double chords[kChunk];
+  for (Eigen::Index s = from; s < to; s += kChunk) {
+    const Eigen::Index e = std::min(s + kChunk, to);
+    if (q.cols() == 2) chordsOf<2>(q.data(), s, e, chords);
+    else chordsOf<3>(q.data(), s, e, chords);
+    if (anyAtMost(chords, e - s, tol)) {
+      for (Eigen::Index i = s; i < e; ++i) {
+        if (chords[i - s] <= tol) throwCoincide(i, i + 1, false);
+      }
+    }
+    if (s == 0) t[0] = 0.0;
+    parametersInto(chords, e - s, kind, t + s, false);
+  }
+}
+
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first) {
+  if (first) t[0] = 0.0;
   // Reads chord i before writing t[i + 1]: chords may be t + 1.
-  t[0] = 0.0;
   for (Eigen::Index i = 0; i < count; ++i) {
     double h = 1.0;
     if (kind == Parametrization::Chordal) h = chords[i];

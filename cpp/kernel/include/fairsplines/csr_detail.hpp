@@ -31,4 +31,10 @@ BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, 
 void cubicPolesInto(PointsRef q, const double* t, bool closed, double size, double epsilon, EpsilonRule rule,
                     bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window, double* poles);
 
+/// The csr-spline of csrSpline(q, options) into t (its knots: n values, n + 1 closed) and
+/// poles (contiguous rows of q's width: n + 2, n closed). Open data of kVectorisedFrom
+/// points or more takes one streaming pass (validation, parameters and poles window by
+/// window); the values are the same.
+void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles);
+
 }  // namespace fairsplines::detail
