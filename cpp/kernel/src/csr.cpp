@@ -236,42 +236,45 @@ inline __attribute__((always_inline)) void dividedDifferences(const double* __re
   }
 }
 
-/// Pass B, per coordinate: the quadratic interpolant f_k of q_{k-1}, q_k, q_{k+1} about
-/// t_k in Newton form, D2 = f_k''/2 and f_k'(t_k), for the points with two neighbours.
-inline __attribute__((always_inline)) void quadratics(const double* __restrict dd, const double* __restrict h,
-                                                        Eigen::Index W, double* __restrict D2,
-                                                        double* __restrict dv) {
+/// Pass B, for the points with two neighbours: the quadratic interpolant f_k of q_{k-1},
+/// q_k, q_{k+1} about t_k in Newton form, D2 = f_k''/2 and f_k'(t_k) (one reciprocal for
+/// all coordinates), and, with `curvature`, |f_k' x f_k''| / |f_k'|^3 at t_k with a single
+/// square root.
+template <int D, bool curvature>
+inline __attribute__((always_inline)) void quadratics(
+    Eigen::Index W, const double* __restrict h, const double* __restrict ddx, const double* __restrict ddy,
+    const double* __restrict ddz, double* __restrict D2x, double* __restrict D2y, double* __restrict D2z,
+    double* __restrict dvx, double* __restrict dvy, double* __restrict dvz, double* __restrict kappa) {
   for (Eigen::Index k = 1; k + 1 < W; ++k) {
     const double hm = h[k - 1], r = 1.0 / (h[k - 1] + h[k]);
-    D2[k] = (dd[k] - dd[k - 1]) * r;
-    dv[k] = dd[k - 1] + D2[k] * hm;  // f'(t_k)
-  }
-}
-
-/// Pass B, curvature |f_k' x f_k''| / |f_k'|^3 at t_k, with a single square root.
-template <int D>
-inline __attribute__((always_inline)) void curvatures(const WindowArrays& a, Eigen::Index W) {
-  const double* __restrict ax = a.dv[0];
-  const double* __restrict ay = a.dv[1];
-  const double* __restrict az = a.dv[2];
-  const double* __restrict bx = a.D2[0];
-  const double* __restrict by = a.D2[1];
-  const double* __restrict bz = a.D2[2];
-  double* __restrict kappa = a.kappa;
-  for (Eigen::Index k = 1; k + 1 < W; ++k) {
-    const double d1x = ax[k], d1y = ay[k], d2x = 2.0 * bx[k], d2y = 2.0 * by[k];
-    double cross2, speed2;
-    if constexpr (D == 2) {
-      const double z = d1x * d2y - d1y * d2x;
-      cross2 = z * z;
-      speed2 = d1x * d1x + d1y * d1y;
-    } else {
-      const double d1z = az[k], d2z = 2.0 * bz[k];
-      const double x = d1y * d2z - d1z * d2y, y = d1z * d2x - d1x * d2z, z = d1x * d2y - d1y * d2x;
-      cross2 = x * x + y * y + z * z;
-      speed2 = d1x * d1x + d1y * d1y + d1z * d1z;
+    const double bx = (ddx[k] - ddx[k - 1]) * r, by = (ddy[k] - ddy[k - 1]) * r;
+    const double d1x = ddx[k - 1] + bx * hm, d1y = ddy[k - 1] + by * hm;  // f'(t_k)
+    D2x[k] = bx;
+    D2y[k] = by;
+    dvx[k] = d1x;
+    dvy[k] = d1y;
+    double bz = 0.0, d1z = 0.0;
+    if constexpr (D == 3) {
+      bz = (ddz[k] - ddz[k - 1]) * r;
+      d1z = ddz[k - 1] + bz * hm;
+      D2z[k] = bz;
+      dvz[k] = d1z;
     }
-    kappa[k] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
+    if constexpr (curvature) {
+      const double d2x = 2.0 * bx, d2y = 2.0 * by;
+      double cross2, speed2;
+      if constexpr (D == 2) {
+        const double z = d1x * d2y - d1y * d2x;
+        cross2 = z * z;
+        speed2 = d1x * d1x + d1y * d1y;
+      } else {
+        const double d2z = 2.0 * bz;
+        const double x = d1y * d2z - d1z * d2y, y = d1z * d2x - d1x * d2z, z = d1x * d2y - d1y * d2x;
+        cross2 = x * x + y * y + z * z;
+        speed2 = d1x * d1x + d1y * d1y + d1z * d1z;
+      }
+      kappa[k] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
+    }
   }
 }
 
@@ -340,7 +343,8 @@ inline __attribute__((always_inline)) void windowPolesImpl(const double* x, cons
                                                              double epsilon, double* out, Eigen::Index rowShift,
                                                              Eigen::Index rowFrom, Eigen::Index rowTo) {
   dividedDifferences<D>(x, a.h, W, a.dd[0], a.dd[1], a.dd[2]);
-  for (int c = 0; c < D; ++c) quadratics(a.dd[c], a.h, W, a.D2[c], a.dv[c]);
+  quadratics<D, !quasiOnly>(W, a.h, a.dd[0], a.dd[1], a.dd[2], a.D2[0], a.D2[1], a.D2[2], a.dv[0], a.dv[1], a.dv[2],
+                            a.kappa);
   auto quadratic = [&](Eigen::Index k) {
     Quadratic<D> f;
     for (int c = 0; c < D; ++c) {
@@ -358,7 +362,6 @@ inline __attribute__((always_inline)) void windowPolesImpl(const double* x, cons
     a.D2[c][W - 1] = a.D2[c][W - 2];
   }
   if constexpr (!quasiOnly) {
-    curvatures<D>(a, W);
     a.kappa[0] = first.kappaAt(-a.h[0]);
     a.kappa[W - 1] = last.kappaAt(a.h[W - 2]);
     weights<rule>(a, W, epsilon);
