@@ -1,6 +1,16 @@
 // Benchmark: csr-spline (kernel, ending in a Geom_BSplineCurve) against OCCT's
 // GeomAPI_Interpolate on the same points, one core, one run.
+//
+// Columns: the fit alone (csrSpline, a kernel BSplineCurve); the fit ending in a
+// Geom_BSplineCurve (csrSplineOcct, the route the workbench takes); the same through
+// toOcct(csrSpline(q)); the Geom_BSplineCurve constructor alone on prebuilt arrays of
+// the same size (a floor no fit can go below); GeomAPI_Interpolate (ending in a
+// Geom_BSplineCurve too); the ratio interpolation / fit+Geom, and the ratio the
+// constructor alone would reach (the bound on the first).
 #include <GeomAPI_Interpolate.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,18 +41,31 @@ PointMatrix samples(int n) {
 
 int main() {
   std::printf("csr-spline vs GeomAPI_Interpolate, same points, one core (best of several runs)\n");
-  std::printf("%9s %11s %10s %15s %10s %17s %8s\n", "N", "fit [ms]", "fit Mpt/s", "fit+Geom [ms]", "Mpt/s",
-              "OCCT interp [ms]", "ratio");
+  std::printf("%9s %9s %9s %13s %7s %12s %11s %14s %7s %7s\n", "N", "fit [ms]", "fit Mpt/s", "fit+Geom [ms]",
+              "Mpt/s", "via toOcct", "Geom ctor", "OCCT interp", "ratio", "bound");
   for (int n : {1000, 10000, 100000, 1000000}) {
     const PointMatrix q = samples(n);
     const int repeats = n >= 1000000 ? 3 : (n >= 100000 ? 7 : 30);
     long poles = 0;
     const double fit = bestSeconds([&] { poles += csrSpline(q).poles.rows(); }, repeats);
-    const double csr = bestSeconds([&] { poles += toOcct(csrSpline(q))->NbPoles(); }, repeats);
+    const double csr = bestSeconds([&] { poles += csrSplineOcct(q)->NbPoles(); }, repeats);
+    const double twoStep = bestSeconds([&] { poles += toOcct(csrSpline(q))->NbPoles(); }, repeats);
+    // The constructor alone, on arrays of the curve's size built beforehand.
+    const BSplineCurve c = csrSpline(q);
+    const int np = static_cast<int>(c.poles.rows()), nk = static_cast<int>(c.knots.size());
+    const TColgp_Array1OfPnt P(*reinterpret_cast<const gp_Pnt*>(c.poles.data()), 1, np);
+    const TColStd_Array1OfReal K(*c.knots.data(), 1, nk);
+    const TColStd_Array1OfInteger M(*c.mults.data(), 1, nk);
+    const double ctor = bestSeconds(
+        [&] {
+          Handle(Geom_BSplineCurve) g = new Geom_BSplineCurve(P, K, M, 3, false);
+          poles += g->NbPoles();
+        },
+        repeats);
     const double occt = bestSeconds(
         [&] { poles += classicInterpolation(q, Parametrization::Chordal, false)->NbPoles(); }, repeats);
-    std::printf("%9d %11.3f %10.1f %15.3f %10.1f %17.3f %7.1fx\n", n, fit * 1e3, n / fit * 1e-6, csr * 1e3,
-                n / csr * 1e-6, occt * 1e3, occt / csr);
+    std::printf("%9d %9.3f %9.1f %13.3f %7.1f %12.3f %11.3f %14.3f %6.1fx %6.1fx\n", n, fit * 1e3, n / fit * 1e-6,
+                csr * 1e3, n / csr * 1e-6, twoStep * 1e3, ctor * 1e3, occt * 1e3, occt / csr, occt / ctor);
     if (poles == 0) return 1;
   }
   return 0;

@@ -5,10 +5,11 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError
-from .kernel import as_points, to_part
+from .kernel import as_points, edge_curve, has_bridge, to_part
 
 PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
 EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
+_NO_PARAMETERS = np.zeros(0)  # read only by the kernel
 
 
 def _check_parametrization(parametrization):
@@ -35,8 +36,11 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
     if epsilon_rule not in EPSILON_RULES:
         raise InputError(f"unknown epsilon_rule {epsilon_rule!r}: use 'case' or 'additive'")
     q = as_points(points)
-    t = np.zeros(0) if parameters is None else np.asarray(parameters, dtype=float)
-    return to_part(_kernel.csr_spline(q, bool(closed), parametrization, float(epsilon), EPSILON_RULES[epsilon_rule], t))
+    t = _NO_PARAMETERS if parameters is None else np.asarray(parameters, dtype=float)
+    args = (q, bool(closed), parametrization, float(epsilon), EPSILON_RULES[epsilon_rule], t)
+    if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
+        return edge_curve(_kernel.csr_edge_address(*args))
+    return to_part(_kernel.csr_spline(*args))
 
 
 def interpolate_classic(points, closed=False, parametrization="chordal"):

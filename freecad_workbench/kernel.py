@@ -11,6 +11,9 @@ def as_points(points, name="points"):
     """Coerce FreeCAD Vectors, Part Vertexes, tuples or an (N,2)/(N,3) array to a
     C-contiguous float64 array of shape (N, 2) or (N, 3)."""
     if isinstance(points, np.ndarray):
+        if (points.dtype == np.float64 and points.ndim == 2 and points.shape[1] in (2, 3)
+                and points.flags.c_contiguous):
+            return points  # already what the kernel reads (the common case: no numpy calls)
         array = points
     else:
         rows = []
@@ -57,11 +60,21 @@ def to_part(curve):
     Part.__fromPythonOCC__ (no copy of the data in Python). Without the SWIG bridge the
     arrays go into buildFromPolesMultsKnots. Both are bit-for-bit exact."""
     if _BRIDGE is not None:
-        import Part
-
-        shape = Part.__fromPythonOCC__(_BRIDGE.adopt_shape(_kernel.edge_address(curve)))
-        return shape.Edge1.Curve
+        return edge_curve(_kernel.edge_address(curve))
     return to_part_arrays(curve)
+
+
+def has_bridge():
+    """Whether kernel-built edges reach FreeCAD without a copy (the SWIG bridge is built)."""
+    return _BRIDGE is not None
+
+
+def edge_curve(address):
+    """The Part curve of a TopoDS_Edge the kernel built (an ``*_edge_address`` result),
+    taking ownership of it. Only with the bridge (has_bridge())."""
+    import Part
+
+    return Part.__fromPythonOCC__(_BRIDGE.adopt_shape(address)).Edge1.Curve
 
 
 def to_part_arrays(curve):

@@ -124,6 +124,19 @@ void bindCurves(py::module_& m) {
       },
       "curve"_a, "Address of a new TopoDS_Edge holding the curve; pass it to occ_bridge.adopt_shape at once.");
   m.def(
+      "csr_edge_address",
+      [](PointsRef q, bool closed, const std::string& parametrization, double epsilon, EpsilonRule rule,
+         const Eigen::VectorXd& t) {
+        // csr_spline and edge_address in one call: the fit goes straight into OCCT
+        // (csrSplineOcct) without a BSplineCurve for Python in between.
+        const CsrOptions options{parseParametrization(parametrization), closed, epsilon, rule, t};
+        auto* shape = new TopoDS_Shape(BRepBuilderAPI_MakeEdge(csrSplineOcct(q, options)).Edge());
+        return reinterpret_cast<std::uintptr_t>(shape);
+      },
+      "points"_a, "closed"_a = false, "parametrization"_a = "chordal", "epsilon"_a = 1e-9,
+      "rule"_a = EpsilonRule::CaseDistinction, "parameters"_a = Eigen::VectorXd(),
+      "Address of a new TopoDS_Edge holding the csr-spline; pass it to occ_bridge.adopt_shape at once.");
+  m.def(
       "to_brep",
       [](const BSplineCurve& curve) { return py::bytes(toBrepString(toOcct(curve))); }, "curve"_a,
       "The curve as BRep edge text with 17 significant digits (exact).");

@@ -161,6 +161,44 @@ TEST(Csr, BadInputThrowsNamedInputError) {
   EXPECT_NE(message(wide).find("2 or 3 coordinates"), std::string::npos);
 }
 
+TEST(Csr, FusedOcctRouteIsBitExact) {
+  // csrSplineOcct builds the same Geom_BSplineCurve as toOcct(csrSpline(...)), bit for bit,
+  // also when its reused memory shrinks and grows between calls.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (bool closed : {false, true}) {
+    for (int n : {3, 4, 9, 200, 5000, 7}) {
+      PointMatrix q(n, 3);
+      for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        q.row(i) << std::cos(a) + 0.2 * unit(rng), std::sin(a) + 0.2 * unit(rng), 0.3 * unit(rng);
+      }
+      for (EpsilonRule rule : {EpsilonRule::CaseDistinction, EpsilonRule::Additive}) {
+        CsrOptions options;
+        options.closed = closed;
+        options.rule = rule;
+        options.parametrization = n == 9 ? Parametrization::Centripetal : Parametrization::Chordal;
+        const Handle(Geom_BSplineCurve) a = toOcct(csrSpline(q, options)), b = csrSplineOcct(q, options);
+        ASSERT_EQ(a->NbPoles(), b->NbPoles());
+        ASSERT_EQ(a->NbKnots(), b->NbKnots());
+        EXPECT_EQ(a->IsPeriodic(), b->IsPeriodic());
+        for (int i = 1; i <= a->NbPoles(); ++i) {
+          EXPECT_EQ(a->Pole(i).X(), b->Pole(i).X());
+          EXPECT_EQ(a->Pole(i).Y(), b->Pole(i).Y());
+          EXPECT_EQ(a->Pole(i).Z(), b->Pole(i).Z());
+        }
+        for (int i = 1; i <= a->NbKnots(); ++i) {
+          EXPECT_EQ(a->Knot(i), b->Knot(i));
+          EXPECT_EQ(a->Multiplicity(i), b->Multiplicity(i));
+        }
+      }
+    }
+  }
+  PointMatrix dup(4, 3);
+  dup << 0, 0, 0, 1, 1, 0, 1, 1, 0, 2, 0, 0;
+  EXPECT_THROW(csrSplineOcct(dup), InputError);
+}
+
 TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

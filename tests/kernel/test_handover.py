@@ -39,3 +39,20 @@ def test_both_routes_are_bit_exact(name, curve):
 def test_zero_copy_bridge_is_built():
     # make build compiles the SWIG bridge (Debian's swig is a build dependency).
     assert kernel._BRIDGE is not None
+
+
+@pytest.mark.parametrize("closed", [False, True])
+@pytest.mark.parametrize("n", [5, 300, 5000])
+def test_csr_spline_goes_straight_to_occt_bit_exactly(closed, n):
+    # fw.csr_spline fits straight into an OCCT edge (csr_edge_address); the curve is the
+    # kernel's csr_spline bit for bit.
+    rng = np.random.default_rng(n)
+    angles = np.sort(rng.random(n)) * 6.0
+    q = np.c_[np.cos(angles), np.sin(angles), 0.1 * rng.standard_normal(n)] * 37.5
+    curve = _kernel.csr_spline(q, closed=closed)
+    part = fw.csr_spline(q, closed=closed)
+    poles = np.array([tuple(p) for p in part.getPoles()])
+    assert np.array_equal(bits(poles), bits(curve.poles))
+    assert np.array_equal(bits(part.getKnots()), bits(curve.knots))
+    assert list(part.getMultiplicities()) == curve.mults.tolist()
+    assert part.isPeriodic() == closed

@@ -33,8 +33,8 @@ Handle(Geom_BSplineCurve) classicInterpolation(PointsRef q, Parametrization para
 
 BSplineCurve quasiInterpolant(PointsRef q, Parametrization parametrization, bool closed) {
   const SampleInfo info = validateSamples(q, closed, 3, "the quasi-interpolant");
-  const Eigen::VectorXd t = parameters(info.chords, parametrization);
-  return detail::fitCubic(q, t, closed, info.size, 1e-9, EpsilonRule::CaseDistinction, true);
+  Eigen::VectorXd t = parameters(info.chords, parametrization);
+  return detail::fitCubic(q, std::move(t), closed, info.size, 1e-9, EpsilonRule::CaseDistinction, true);
 }
 
 BSplineCurve controlPointSpline(PointsRef q, bool closed) {

@@ -3,13 +3,14 @@
 #include "fairsplines/csr.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
-#include <memory>
 #include <vector>
 
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/vectorise.hpp"
 
 namespace fairsplines {
 namespace detail {
@@ -118,7 +119,7 @@ void csrPoles(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& 
   }
   double mu_i = weight(k0, km);
   for (Eigen::Index i = first; i <= last; ++i) {
-    const bool leftIsSelf = !closed && i == 1, rightIsSelf = !closed && i == n - 2;
+    const bool rightIsSelf = !closed && i == n - 2;
     if (rightIsSelf) {
       fp = f0;
       kp = f0.kappaAt(h[n - 2]);
@@ -168,224 +169,329 @@ inline double weightOf(double a, double b, double epsilon) {
   if constexpr (rule == EpsilonRule::Additive) {
     return (a + epsilon) / (a + b + 2.0 * epsilon);
   } else {
-    const double sum = a + b;
-    return sum > epsilon ? a / sum : 0.5;
+    // The quotient is formed unconditionally (and discarded below epsilon), so that the
+    // choice is a blend, not a branch, and the loops vectorise.
+    const double sum = a + b, quotient = a / sum;
+    return sum > epsilon ? quotient : 0.5;
   }
 }
 
-/// The same poles as csrPoles, computed in passes over a structure of arrays (one array
-/// per coordinate, padded by one point at each end so closed data wraps without
-/// branches), so that every loop vectorises.
-/// Scratch memory for csrPolesSoa on up to n points, reused across windows.
-/// Uninitialised on purpose: every entry read is written first. Arrays m doubles long
-/// would sit a multiple of 4 KiB apart for round n, and the loops that stream through
-/// several of them at once would alias in the caches: the stride is padded.
-template <int D>
-struct SoaWorkspace {
-  explicit SoaWorkspace(Eigen::Index n) : stride(n + 2 + 37), storage(new double[static_cast<size_t>(stride) * (4 * D + 3)]) {}
-  Eigen::Index stride;
-  std::unique_ptr<double[]> storage;
+// The vectorised strategy: the same poles as csrPoles, computed window by window in
+// passes over a structure of arrays (one array per coordinate), every pass a loop
+// without branches that the compiler vectorises. c_i depends on q_{i-2}..q_{i+2} only,
+// so a window of W consecutive points solved as open data gives the global poles of its
+// points 2..W-3 (and, where the window touches an end of open data, the end rows too);
+// windows overlap by four points. Closed data is read cyclically into the window.
+
+/// Scratch arrays for one window of up to `capacity` points, kept per thread and reused,
+/// so that repeated fits neither allocate nor touch fresh pages. Every entry read is
+/// written first. Arrays whose distance is a multiple of 4 KiB alias in the caches when
+/// a loop streams through several at once: the stride is padded by one cache line.
+struct WindowArrays {
+  double* dd[3];     // first divided differences (q_{k+1} - q_k) / h_k of segment k
+  double* D2[3];     // f_k''/2 of the quadratic interpolant f_k about t_k
+  double* dv[3];     // f_k'(t_k)
+  double* h;         // h_k = t_{k+1} - t_k
+  double* kappa;     // |curvature| of f_k at t_k
+  double* mu;        // mu_k of eq. (6): weight of kappa_k against kappa_{k-1}
+  double* aL;        // weight of p_k^L times h_{k-1}^2 / 3
+  double* aR;        // weight of p_k^R times h_k^2 / 3
+  static constexpr int kArrays = 14;
 };
 
-template <int D, EpsilonRule rule, bool quasiOnly>
-void csrPolesSoa(PointsRef q, const Eigen::VectorXd& h, bool closed, double epsilon, SoaWorkspace<D>& workspace,
-                 PointMatrix& out) {
-  const Eigen::Index n = q.rows(), segments = h.size();  // padded index j = i + 1
-  const Eigen::Index stride = workspace.stride;
-  double* const bufferData = workspace.storage.get();
-  double* X[D];
-  double* dd[D];
-  double* D2[D];
-  double* dv[D];
-  for (int c = 0; c < D; ++c) {
-    X[c] = bufferData + (0 * D + c) * stride;
-    dd[c] = bufferData + (1 * D + c) * stride;
-    D2[c] = bufferData + (2 * D + c) * stride;
-    dv[c] = bufferData + (3 * D + c) * stride;
+class Workspace {
+ public:
+  WindowArrays arrays(Eigen::Index capacity) {
+    const Eigen::Index stride = (capacity + 7) / 8 * 8 + 8;
+    const size_t need = static_cast<size_t>(stride) * WindowArrays::kArrays;
+    if (storage_.size() < need) storage_.resize(need);
+    double* p = storage_.data();
+    WindowArrays a;
+    for (int c = 0; c < 3; ++c) a.dd[c] = p + (0 + c) * stride;
+    for (int c = 0; c < 3; ++c) a.D2[c] = p + (3 + c) * stride;
+    for (int c = 0; c < 3; ++c) a.dv[c] = p + (6 + c) * stride;
+    a.h = p + 9 * stride;
+    a.kappa = p + 10 * stride;
+    a.mu = p + 11 * stride;
+    a.aL = p + 12 * stride;
+    a.aR = p + 13 * stride;
+    return a;
   }
-  double* H = bufferData + 4 * D * stride;  // H[j]: t_{i+1} - t_i (segment after point i)
-  double* kappa = H + stride;
-  double* hb = kappa + stride;  // t_i - t_{i-1}
-  const double* qd = q.data();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    for (int c = 0; c < D; ++c) X[c][i + 1] = qd[D * i + c];
+
+ private:
+  std::vector<double> storage_;
+};
+
+/// Pass A: first divided differences of the W - 1 segments of a window of contiguous
+/// (W x D) points, one reciprocal per segment.
+template <int D>
+inline __attribute__((always_inline)) void dividedDifferences(const double* __restrict x, const double* __restrict h,
+                                                                Eigen::Index W, double* __restrict ddx,
+                                                                double* __restrict ddy, double* __restrict ddz) {
+  for (Eigen::Index k = 0; k + 1 < W; ++k) {
+    const double r = 1.0 / h[k];
+    ddx[k] = (x[D * (k + 1)] - x[D * k]) * r;
+    ddy[k] = (x[D * (k + 1) + 1] - x[D * k + 1]) * r;
+    if constexpr (D == 3) ddz[k] = (x[D * (k + 1) + 2] - x[D * k + 2]) * r;
   }
-  for (int c = 0; c < D; ++c) {
-    X[c][0] = X[c][n];      // point -1 = point n-1 (closed)
-    X[c][n + 1] = X[c][1];  // point n = point 0 (closed)
-  }
-  for (Eigen::Index i = 0; i < segments; ++i) H[i + 1] = h[i];
-  H[0] = h[segments - 1];
-  if (!closed) H[n] = h[segments - 1];  // unused by open data
-  H[n + 1] = h[0];
-  // Pass A: first divided differences of segment i (point i to i + 1), j = i + 1.
-  const Eigen::Index jLast = closed ? n : n - 1;  // last segment's j
-  const Eigen::Index jFirst = closed ? 0 : 1;
-  for (int c = 0; c < D; ++c) {
-    double* __restrict out_c = dd[c];
-    const double* __restrict x = X[c];
-    for (Eigen::Index j = jFirst; j <= jLast; ++j) out_c[j] = (x[j + 1] - x[j]) * (1.0 / H[j]);
-  }
-  // Pass B: f_i about t_i for every point with two neighbours: D2 = f''/2, d = f'(t_i), kappa.
-  const Eigen::Index first = closed ? 0 : 1, last = closed ? n - 1 : n - 2;
-  for (Eigen::Index j = first + 1; j <= last + 1; ++j) {
-    const double hm = H[j - 1], h0 = H[j], r = 1.0 / (hm + h0);
-    hb[j] = hm;
-    double d1[D], d2[D];
-    for (int c = 0; c < D; ++c) {
-      D2[c][j] = (dd[c][j] - dd[c][j - 1]) * r;
-      dv[c][j] = dd[c][j - 1] + D2[c][j] * hm;
-      d1[c] = dv[c][j];
-      d2[c] = 2.0 * D2[c][j];
+}
+
+/// Pass B, for the points with two neighbours: the quadratic interpolant f_k of q_{k-1},
+/// q_k, q_{k+1} about t_k in Newton form, D2 = f_k''/2 and f_k'(t_k) (one reciprocal for
+/// all coordinates), and, with `curvature`, |f_k' x f_k''| / |f_k'|^3 at t_k with a single
+/// square root.
+template <int D, bool curvature>
+inline __attribute__((always_inline)) void quadratics(
+    Eigen::Index W, const double* __restrict h, const double* __restrict ddx, const double* __restrict ddy,
+    const double* __restrict ddz, double* __restrict D2x, double* __restrict D2y, double* __restrict D2z,
+    double* __restrict dvx, double* __restrict dvy, double* __restrict dvz, double* __restrict kappa) {
+  for (Eigen::Index k = 1; k + 1 < W; ++k) {
+    const double hm = h[k - 1], r = 1.0 / (h[k - 1] + h[k]);
+    const double bx = (ddx[k] - ddx[k - 1]) * r, by = (ddy[k] - ddy[k - 1]) * r;
+    const double d1x = ddx[k - 1] + bx * hm, d1y = ddy[k - 1] + by * hm;  // f'(t_k)
+    D2x[k] = bx;
+    D2y[k] = by;
+    dvx[k] = d1x;
+    dvy[k] = d1y;
+    double bz = 0.0, d1z = 0.0;
+    if constexpr (D == 3) {
+      bz = (ddz[k] - ddz[k - 1]) * r;
+      d1z = ddz[k - 1] + bz * hm;
+      D2z[k] = bz;
+      dvz[k] = d1z;
     }
-    double cross2, speed2 = 0.0;
-    if constexpr (D == 2) {
-      const double z = d1[0] * d2[1] - d1[1] * d2[0];
-      cross2 = z * z;
-    } else {
-      const double x = d1[1] * d2[2] - d1[2] * d2[1], y = d1[2] * d2[0] - d1[0] * d2[2],
-                   z = d1[0] * d2[1] - d1[1] * d2[0];
-      cross2 = x * x + y * y + z * z;
-    }
-    for (int c = 0; c < D; ++c) speed2 += d1[c] * d1[c];
-    kappa[j] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
-  }
-  auto curvatureAt = [&](Eigen::Index j, double X0) {  // f of point j at offset X0 from its t
-    Vec<D> a, b;
-    for (int c = 0; c < D; ++c) {
-      a[c] = dv[c][j] + 2.0 * X0 * D2[c][j];
-      b[c] = 2.0 * D2[c][j];
-    }
-    return curvatureOf<D>(a, b);
-  };
-  if (closed) {
-    for (int c = 0; c < D; ++c) {
-      D2[c][0] = D2[c][n];
-      D2[c][n + 1] = D2[c][1];
-    }
-    kappa[0] = kappa[n];
-    kappa[n + 1] = kappa[1];
-  } else {
-    // Ends of open data: f_0 := f_1 and f_{n-1} := f_{n-2}; kappa_0 is the curvature of
-    // f_1 at q_0 (mirrored at the end).
-    for (int c = 0; c < D; ++c) {
-      D2[c][1] = D2[c][2];
-      D2[c][n] = D2[c][n - 1];
-    }
-    kappa[1] = curvatureAt(2, -h[0]);
-    kappa[n] = curvatureAt(n - 1, h[n - 2]);
-  }
-  // Pass C: eq. (6) for every c_i (see csrPoles for the closed form of p_i^L, p_i^R).
-  const Eigen::Index offset = closed ? 0 : 1;
-  out.resize(closed ? n : n + 2, D);
-  double* o = out.data();
-  const double third = 1.0 / 3.0;
-  for (Eigen::Index j = first + 1; j <= last + 1; ++j) {
-    const double hm = hb[j], h0 = H[j];
-    const double ap = (h0 - hm) * third, bp = -hm * h0 * third;
-    double aL = 0.0, aR = 0.0;
-    if constexpr (!quasiOnly) {
-      const double km = kappa[j - 1], k0 = kappa[j], kp = kappa[j + 1];
-      const double mu_i = weightOf<rule>(k0, km, epsilon);
-      const double mu_ip = weightOf<rule>(kp, k0, epsilon);
-      const double nu_i = weightOf<rule>(km, kp, epsilon);
-      aL = (1.0 - nu_i) * mu_i * hm * hm * third;
-      aR = nu_i * (1.0 - mu_ip) * h0 * h0 * third;
-    }
-    for (int c = 0; c < D; ++c) {
-      o[D * (j - 1 + offset) + c] = X[c][j] + dv[c][j] * ap + D2[c][j] * bp - aL * (D2[c][j - 1] - D2[c][j]) -
-                                    aR * (D2[c][j + 1] - D2[c][j]);
-    }
-  }
-  if (!closed) {
-    auto blossom = [&](Eigen::Index j, double x, double y, double z) {
-      Quadratic<D> f;
-      for (int c = 0; c < D; ++c) {
-        f.q[c] = X[c][j];
-        f.d[c] = dv[c][j];
-        f.D2[c] = D2[c][j];
+    if constexpr (curvature) {
+      const double d2x = 2.0 * bx, d2y = 2.0 * by;
+      double cross2, speed2;
+      if constexpr (D == 2) {
+        const double z = d1x * d2y - d1y * d2x;
+        cross2 = z * z;
+        speed2 = d1x * d1x + d1y * d1y;
+      } else {
+        const double d2z = 2.0 * bz;
+        const double x = d1y * d2z - d1z * d2y, y = d1z * d2x - d1x * d2z, z = d1x * d2y - d1y * d2x;
+        cross2 = x * x + y * y + z * z;
+        speed2 = d1x * d1x + d1y * d1y + d1z * d1z;
       }
-      return f.blossom3(x, y, z);
-    };
-    out.row(0) = q.row(0);
-    out.row(1) = blossom(2, -h[0], -h[0], 0.0).transpose();
-    out.row(n) = blossom(n - 1, 0.0, h[n - 2], h[n - 2]).transpose();
-    out.row(n + 1) = q.row(n - 1);
+      kappa[k] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
+    }
   }
 }
 
-template <int D>
-void csrPolesSoaDispatch(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
-                         SoaWorkspace<D>& workspace, PointMatrix& out) {
-  if (quasiOnly) {
-    csrPolesSoa<D, EpsilonRule::CaseDistinction, true>(q, h, closed, weight.epsilon, workspace, out);
-  } else if (weight.rule == EpsilonRule::Additive) {
-    csrPolesSoa<D, EpsilonRule::Additive, false>(q, h, closed, weight.epsilon, workspace, out);
-  } else {
-    csrPolesSoa<D, EpsilonRule::CaseDistinction, false>(q, h, closed, weight.epsilon, workspace, out);
+/// The weights of eq. (6) for the points with two neighbours: mu_k = kappa_k / (kappa_k +
+/// kappa_{k-1}) once per pair (mu_{k+1} is the next point's mu_k), nu_k = kappa_{k-1} /
+/// (kappa_{k-1} + kappa_{k+1}); aL, aR fold in the h^2 / 3 of the blossom differences.
+template <EpsilonRule rule>
+inline __attribute__((always_inline)) void weights(const WindowArrays& a, Eigen::Index W, double epsilon) {
+  const double* __restrict kappa = a.kappa;
+  const double* __restrict h = a.h;
+  double* __restrict mu = a.mu;
+  double* __restrict aL = a.aL;
+  double* __restrict aR = a.aR;
+  const double third = 1.0 / 3.0;
+  for (Eigen::Index k = 1; k < W; ++k) mu[k] = weightOf<rule>(kappa[k], kappa[k - 1], epsilon);
+  for (Eigen::Index k = 1; k + 1 < W; ++k) {
+    const double hm = h[k - 1], h0 = h[k];
+    const double nu = weightOf<rule>(kappa[k - 1], kappa[k + 1], epsilon);
+    aL[k] = (1.0 - nu) * mu[k] * hm * hm * third;
+    aR[k] = nu * (1.0 - mu[k + 1]) * h0 * h0 * third;
   }
 }
 
-/// The vectorised passes window by window, so that their arrays stay in cache. c_i
-/// depends on q_{i-2}..q_{i+2} only, so a window of W points solved as open data gives
-/// the global poles for its points 2..W-3 (and, where a window touches an end of open
-/// data, for the end rows too); windows overlap by four points. Closed data is read
-/// cyclically.
-template <int D>
-void csrPolesFast(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& weight, bool quasiOnly,
-                  PointMatrix& out, Eigen::Index window) {
-  const Eigen::Index n = q.rows(), W = std::max<Eigen::Index>(window, 8);
-  SoaWorkspace<D> workspace(std::min(n, W));
-  if (n <= W) {
-    csrPolesSoaDispatch<D>(q, h, closed, weight, quasiOnly, workspace, out);
-    return;
+/// Pass C: eq. (6) for the poles of points kFrom..kTo of the window, written as rows
+/// kFrom + rowShift... of `out`. p_k = F_k[t_{k-1}, t_k, t_{k+1}] is the cubic blossom of
+/// f_k; f_{k-1} - f_k vanishes at t_{k-1} and t_k, so it is (D2_{k-1} - D2_k)(t - t_{k-1})
+/// (t - t_k), whose blossom at (t_{k-1}, t_k, t_{k+1}) is -(D2_{k-1} - D2_k) h_{k-1}^2 / 3:
+/// p_k^L = p_k - (D2_{k-1} - D2_k) h_{k-1}^2 / 3, likewise p_k^R with D2_{k+1} and h_k, and
+/// c_k = p_k - (1 - nu_k) mu_k (p_k - p_k^L) - nu_k (1 - mu_{k+1}) (p_k - p_k^R).
+template <int D, bool quasiOnly>
+inline __attribute__((always_inline)) void poles(const double* __restrict x, const WindowArrays& a, Eigen::Index kFrom,
+                                                   Eigen::Index kTo, double* __restrict out) {
+  const double* __restrict h = a.h;
+  const double* __restrict aL = a.aL;
+  const double* __restrict aR = a.aR;
+  const double* __restrict D2x = a.D2[0];
+  const double* __restrict D2y = a.D2[1];
+  const double* __restrict D2z = a.D2[2];
+  const double* __restrict dvx = a.dv[0];
+  const double* __restrict dvy = a.dv[1];
+  const double* __restrict dvz = a.dv[2];
+  const double third = 1.0 / 3.0;
+  for (Eigen::Index k = kFrom; k <= kTo; ++k) {
+    const double hm = h[k - 1], h0 = h[k];
+    const double ap = (h0 - hm) * third, bp = -hm * h0 * third;  // p_k = q_k + f'(t_k) ap + D2_k bp
+    double* o = out + D * (k - kFrom);
+    if constexpr (quasiOnly) {
+      o[0] = x[D * k] + dvx[k] * ap + D2x[k] * bp;
+      o[1] = x[D * k + 1] + dvy[k] * ap + D2y[k] * bp;
+      if constexpr (D == 3) o[2] = x[D * k + 2] + dvz[k] * ap + D2z[k] * bp;
+    } else {
+      o[0] = x[D * k] + dvx[k] * ap + D2x[k] * bp - aL[k] * (D2x[k - 1] - D2x[k]) - aR[k] * (D2x[k + 1] - D2x[k]);
+      o[1] = x[D * k + 1] + dvy[k] * ap + D2y[k] * bp - aL[k] * (D2y[k - 1] - D2y[k]) - aR[k] * (D2y[k + 1] - D2y[k]);
+      if constexpr (D == 3) {
+        o[2] = x[D * k + 2] + dvz[k] * ap + D2z[k] * bp - aL[k] * (D2z[k - 1] - D2z[k]) - aR[k] * (D2z[k + 1] - D2z[k]);
+      }
+    }
   }
-  out.resize(closed ? n : n + 2, D);
-  PointMatrix local;
+}
+
+/// One window of W >= 3 contiguous points x (W x D) with h_k = t_{k+1} - t_k in a.h,
+/// solved as open data: its poles are rows 0..W+1 (row k + 1 for point k; rows 0, 1, W,
+/// W + 1 are the clamped ends). Writes rows rowFrom..rowTo to out + D * (row + rowShift).
+template <int D, EpsilonRule rule, bool quasiOnly>
+inline __attribute__((always_inline)) void windowPolesImpl(const double* x, const WindowArrays& a, Eigen::Index W,
+                                                             double epsilon, double* out, Eigen::Index rowShift,
+                                                             Eigen::Index rowFrom, Eigen::Index rowTo) {
+  dividedDifferences<D>(x, a.h, W, a.dd[0], a.dd[1], a.dd[2]);
+  quadratics<D, !quasiOnly>(W, a.h, a.dd[0], a.dd[1], a.dd[2], a.D2[0], a.D2[1], a.D2[2], a.dv[0], a.dv[1], a.dv[2],
+                            a.kappa);
+  auto quadratic = [&](Eigen::Index k) {
+    Quadratic<D> f;
+    for (int c = 0; c < D; ++c) {
+      f.q[c] = x[D * k + c];
+      f.d[c] = a.dv[c][k];
+      f.D2[c] = a.D2[c][k];
+    }
+    return f;
+  };
+  // Ends of open data: f_0 := f_1 and f_{W-1} := f_{W-2}; kappa_0 is the curvature of
+  // f_1 at q_0 (mirrored at the end).
+  const Quadratic<D> first = quadratic(1), last = quadratic(W - 2);
+  for (int c = 0; c < D; ++c) {
+    a.D2[c][0] = a.D2[c][1];
+    a.D2[c][W - 1] = a.D2[c][W - 2];
+  }
+  if constexpr (!quasiOnly) {
+    a.kappa[0] = first.kappaAt(-a.h[0]);
+    a.kappa[W - 1] = last.kappaAt(a.h[W - 2]);
+    weights<rule>(a, W, epsilon);
+  }
+  auto row = [&](Eigen::Index r) { return Eigen::Map<Vec<D>>(out + D * (r + rowShift)); };
+  // Clamped start: F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1.
+  if (rowFrom <= 0) row(0) = Eigen::Map<const Vec<D>>(x);
+  if (rowFrom <= 1 && rowTo >= 1) row(1) = first.blossom3(-a.h[0], -a.h[0], 0.0);
+  const Eigen::Index kFrom = std::max<Eigen::Index>(rowFrom - 1, 1), kTo = std::min<Eigen::Index>(rowTo - 1, W - 2);
+  if (kFrom <= kTo) poles<D, quasiOnly>(x, a, kFrom, kTo, out + D * (kFrom + 1 + rowShift));
+  // Clamped end: F[t_{W-2},t_{W-1},t_{W-1}] of f_{W-2} and q_{W-1}.
+  if (rowFrom <= W && rowTo >= W) row(W) = last.blossom3(0.0, a.h[W - 2], a.h[W - 2]);
+  if (rowTo >= W + 1) row(W + 1) = Eigen::Map<const Vec<D>>(x + D * (W - 1));
+}
+
+/// The instances the strategy runs, each compiled for AVX2 and for the baseline.
+using WindowFunction = void (*)(const double*, const WindowArrays&, Eigen::Index, double, double*, Eigen::Index,
+                                Eigen::Index, Eigen::Index);
+#define FAIRSPLINES_WINDOW(NAME, D, RULE, QUASI)                                                              \
+  FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W, double epsilon,     \
+                                  double* out, Eigen::Index rowShift, Eigen::Index rowFrom, Eigen::Index rowTo) { \
+    windowPolesImpl<D, RULE, QUASI>(x, a, W, epsilon, out, rowShift, rowFrom, rowTo);                         \
+  }
+FAIRSPLINES_WINDOW(window2Case, 2, EpsilonRule::CaseDistinction, false)
+FAIRSPLINES_WINDOW(window2Additive, 2, EpsilonRule::Additive, false)
+FAIRSPLINES_WINDOW(window2Quasi, 2, EpsilonRule::CaseDistinction, true)
+FAIRSPLINES_WINDOW(window3Case, 3, EpsilonRule::CaseDistinction, false)
+FAIRSPLINES_WINDOW(window3Additive, 3, EpsilonRule::Additive, false)
+FAIRSPLINES_WINDOW(window3Quasi, 3, EpsilonRule::CaseDistinction, true)
+#undef FAIRSPLINES_WINDOW
+
+WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
+  if (dim == 2) return quasiOnly ? window2Quasi : rule == EpsilonRule::Additive ? window2Additive : window2Case;
+  return quasiOnly ? window3Quasi : rule == EpsilonRule::Additive ? window3Additive : window3Case;
+}
+
+/// The window scratch of this thread.
+Workspace& threadWorkspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
+
+/// The vectorised strategy over all samples (contiguous rows), writing the poles in
+/// place: open data n + 2 rows (clamped), closed data n rows in OCCT's periodic order
+/// (row r holds c_{r+1}, see periodicCubic).
+void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& weight, bool quasiOnly,
+                      Eigen::Index window, double* out) {
+  const Eigen::Index n = q.rows(), dim = q.cols();
+  const WindowFunction solve = windowFunction(static_cast<int>(dim), weight.rule, quasiOnly);
+  Workspace& workspace = threadWorkspace();
   if (!closed) {
+    const Eigen::Index W = std::min(n, std::max<Eigen::Index>(window, 8));
+    const WindowArrays a = workspace.arrays(W);
     for (Eigen::Index s = 0;; s += W - 4) {
       s = std::min(s, n - W);
-      csrPolesSoaDispatch<D>(q.middleRows(s, W), h.segment(s, W - 1), false, weight, quasiOnly, workspace, local);
+      for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];  // as csrPoles's h
       const bool atStart = s == 0, atEnd = s + W == n;
-      const Eigen::Index from = atStart ? 0 : 3, to = atEnd ? W + 1 : W - 2;  // local rows (c_i is row i + 1)
-      out.middleRows(s + from, to - from + 1) = local.middleRows(from, to - from + 1);
+      // Local rows 3..W-2 are the poles of points 2..W-3; global row = s + local row.
+      solve(q.data() + dim * s, a, W, weight.epsilon, out, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
       if (atEnd) break;
     }
     return;
   }
-  PointMatrix wq(W, D);
-  Eigen::VectorXd wh(W - 1);
+  // Closed: points 1..n (point n is point 0) give rows 0..n-1. A window starting at
+  // point s holds points s..s+W-1 read cyclically; its local row k + 1 (point s + k) is
+  // global row s + k - 1.
+  const Eigen::Index W = std::min(std::max<Eigen::Index>(window, 8), n + 4);  // n + 4: all in one
+  const WindowArrays a = workspace.arrays(W);
+  PointMatrix wq(W, dim);
   auto wrap = [n](Eigen::Index i) { return ((i % n) + n) % n; };
-  for (Eigen::Index s = -2; s + 2 < n; s += W - 4) {
-    for (Eigen::Index k = 0; k < W; ++k) wq.row(k) = q.row(wrap(s + k));
-    for (Eigen::Index k = 0; k + 1 < W; ++k) wh[k] = h[wrap(s + k)];
-    csrPolesSoaDispatch<D>(wq, wh, false, weight, quasiOnly, workspace, local);
-    for (Eigen::Index i = 2; i <= W - 3 && s + i < n; ++i) out.row(s + i) = local.row(i + 1);
+  for (Eigen::Index s = -1; s + 2 <= n; s += W - 4) {
+    for (Eigen::Index k = 0; k < W; ++k) {
+      const Eigen::Index i = wrap(s + k);
+      wq.row(k) = q.row(i);
+      if (k + 1 < W) a.h[k] = t[i + 1] - t[i];
+    }
+    solve(wq.data(), a, W, weight.epsilon, out, s - 2, 3, std::min(W - 2, n + 1 - s));
   }
 }
 
 }  // namespace
 
 CsrStrategy defaultStrategy(Eigen::Index n) {
-  // Measured with bench/bench_csr: the vectorised passes win from a few thousand points;
-  // below, their allocation costs more than they save.
-  return n >= 2048 ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
+  // Measured: the vectorised passes are about 3x faster from 100 points on (their scratch
+  // memory is reused, so it costs nothing per call); the streaming pass stays the
+  // reference for small data.
+  return n >= kVectorisedFrom ? CsrStrategy::Vectorised : CsrStrategy::Streaming;
 }
 
-BSplineCurve fitCubic(PointsRef q, const Eigen::VectorXd& t, bool closed, double size, double epsilon,
-                      EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window) {
-  const Weight weight{epsilon / size, rule};
-  const Eigen::VectorXd h = t.tail(t.size() - 1) - t.head(t.size() - 1);
-  PointMatrix poles;
-  if (window <= 0) window = q.rows() <= (1 << 18) ? q.rows() : 4096;
-  if (strategy.value_or(defaultStrategy(q.rows())) == CsrStrategy::Vectorised) {
-    if (q.cols() == 2) csrPolesFast<2>(q, h, closed, weight, quasiOnly, poles, window);
-    else csrPolesFast<3>(q, h, closed, weight, quasiOnly, poles, window);
-  } else {
-    if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, poles);
-    else csrPoles<3>(q, h, closed, weight, quasiOnly, poles);
+void cubicPolesInto(PointsRef q, const double* t, bool closed, double size, double epsilon, EpsilonRule rule,
+                    bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window, double* poles) {
+  if (q.outerStride() != q.cols()) {  // the passes read rows as one contiguous block
+    cubicPolesInto(PointMatrix(q), t, closed, size, epsilon, rule, quasiOnly, strategy, window, poles);
+    return;
   }
-  return closed ? periodicCubic(std::move(poles), t) : clampedCubic(std::move(poles), t);
+  const Weight weight{epsilon / size, rule};
+  const Eigen::Index n = q.rows();
+  if (strategy.value_or(defaultStrategy(n)) == CsrStrategy::Vectorised) {
+    csrPolesWindowed(q, t, closed, weight, quasiOnly, window <= 0 ? kWindow : window, poles);
+    return;
+  }
+  const Eigen::Map<const Eigen::VectorXd> tv(t, closed ? n + 1 : n);
+  const Eigen::VectorXd h = tv.tail(tv.size() - 1) - tv.head(tv.size() - 1);
+  PointMatrix p;
+  if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, p);
+  else csrPoles<3>(q, h, closed, weight, quasiOnly, p);
+  Eigen::Map<PointMatrix> out(poles, p.rows(), p.cols());
+  if (closed) {
+    // OCCT's periodic pole j belongs to the basis function starting at knot j - 1: row
+    // j holds c_{j+1} (see periodicCubic).
+    for (Eigen::Index j = 0; j < n; ++j) out.row(j) = p.row((j + 1) % n);
+  } else {
+    out = p;
+  }
+}
+
+BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, double epsilon, EpsilonRule rule,
+                      bool quasiOnly, std::optional<CsrStrategy> strategy, Eigen::Index window) {
+  // The curve is built in place: poles written where they stay, the parameters moved
+  // into the knots (clampedCubic / periodicCubic's layout).
+  const Eigen::Index n = q.rows();
+  BSplineCurve curve;
+  curve.degree = 3;
+  curve.periodic = closed;
+  curve.poles.resize(closed ? n : n + 2, q.cols());
+  cubicPolesInto(q, t.data(), closed, size, epsilon, rule, quasiOnly, strategy, window, curve.poles.data());
+  curve.mults = Eigen::VectorXi::Ones(t.size());
+  if (!closed) curve.mults[0] = curve.mults[t.size() - 1] = 4;
+  curve.knots = std::move(t);
+  return curve;
 }
 
 template <int D>
@@ -421,15 +527,57 @@ PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed,
   return m;
 }
 
+void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles) {
+  const Eigen::Index n = q.rows(), dim = q.cols();
+  const bool fused = !options.closed && options.parameters.size() == 0 && options.epsilon > 0.0 &&
+                     (dim == 2 || dim == 3) && q.outerStride() == dim && n >= kVectorisedFrom;
+  if (!fused) {
+    const Eigen::Index segments = options.closed ? n : n - 1;
+    // The chords are written where the parameters go and turned into them in place.
+    const double size = validateSamplesInto(q, options.closed, 3, "the csr-spline", t + 1);
+    if (options.parameters.size() > 0) {
+      const Eigen::VectorXd given = validatedParameters(options.parameters, n, options.closed);
+      std::copy(given.data(), given.data() + given.size(), t);
+    } else {
+      parametersInto(t + 1, segments, options.parametrization, t);
+    }
+    if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
+    cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
+    return;
+  }
+  // Open data in one streaming pass after the bounding box: each window's chords and
+  // parameters are computed just before its poles, while its points are in cache. The
+  // checks, their order and every value are those of the path above.
+  const double size = openSampleSize(q, 3, "the csr-spline");
+  const WindowFunction solve = windowFunction(static_cast<int>(dim), options.rule, false);
+  const Eigen::Index W = std::min(n, kWindow);
+  const WindowArrays a = threadWorkspace().arrays(W);
+  Eigen::Index known = 0;  // t[0..known] are computed (none yet)
+  for (Eigen::Index s = 0;; s += W - 4) {
+    s = std::min(s, n - W);
+    extendParameters(q, known, s + W - 1, options.parametrization, size, t);
+    known = s + W - 1;
+    for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];
+    const bool atStart = s == 0, atEnd = s + W == n;
+    solve(q.data() + dim * s, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
+    if (atEnd) break;
+  }
+}
+
 }  // namespace detail
 
 BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
-  const SampleInfo info = validateSamples(q, options.closed, 3, "the csr-spline");
-  const Eigen::VectorXd t = options.parameters.size() > 0
-                                ? validatedParameters(options.parameters, q.rows(), options.closed)
-                                : parameters(info.chords, options.parametrization);
-  if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
-  return detail::fitCubic(q, t, options.closed, info.size, options.epsilon, options.rule, false);
+  // The curve is built in place (clampedCubic / periodicCubic's layout).
+  const Eigen::Index n = q.rows(), knots = std::max<Eigen::Index>(options.closed ? n + 1 : n, 1);
+  BSplineCurve curve;
+  curve.degree = 3;
+  curve.periodic = options.closed;
+  curve.knots.resize(knots);
+  curve.poles.resize(std::max<Eigen::Index>(options.closed ? n : n + 2, 0), q.cols());
+  detail::csrSplineInto(q, options, curve.knots.data(), curve.poles.data());
+  curve.mults = Eigen::VectorXi::Ones(knots);
+  if (!options.closed) curve.mults[0] = curve.mults[knots - 1] = 4;
+  return curve;
 }
 
 BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {

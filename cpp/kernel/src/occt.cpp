@@ -7,8 +7,11 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
+#include <algorithm>
 #include <sstream>
+#include <vector>
 
+#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
 
 namespace fairsplines {
@@ -37,6 +40,38 @@ Handle(Geom_BSplineCurve) toOcct(const BSplineCurve& curve) {
       return new Geom_BSplineCurve(poles, weights, knots, mults, curve.degree, curve.periodic);
     }
     return new Geom_BSplineCurve(poles, knots, mults, curve.degree, curve.periodic);
+  } catch (const Standard_Failure& failure) {
+    throw InputError(std::string("OpenCASCADE rejected the B-spline: ") + failure.GetMessageString());
+  }
+}
+
+Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options) {
+  // 2D poles need a z column: the plain route.
+  if (q.cols() != 3) return toOcct(csrSpline(q, options));
+  struct Scratch {
+    std::vector<double> t, poles;
+    std::vector<int> mults;
+  };
+  thread_local Scratch scratch;
+  const bool closed = options.closed;
+  const Eigen::Index n = q.rows(), segments = closed ? n : n - 1, knots = segments + 1;
+  const Eigen::Index poles = closed ? n : n + 2;
+  if (n < 3) return toOcct(csrSpline(q, options));  // the error message
+  // Grow only: resize value-initialises the new part once, later fits reuse it.
+  if (scratch.t.size() < static_cast<size_t>(knots)) scratch.t.resize(knots);
+  if (scratch.poles.size() < static_cast<size_t>(3 * poles)) scratch.poles.resize(3 * poles);
+  if (scratch.mults.size() < static_cast<size_t>(knots)) scratch.mults.resize(knots);
+  double* t = scratch.t.data();
+  detail::csrSplineInto(q, options, t, scratch.poles.data());
+  int* m = scratch.mults.data();
+  std::fill(m, m + knots, 1);
+  if (!closed) m[0] = m[knots - 1] = 4;
+  static_assert(sizeof(gp_Pnt) == 3 * sizeof(double), "gp_Pnt is three doubles");
+  try {
+    const TColgp_Array1OfPnt P(*reinterpret_cast<const gp_Pnt*>(scratch.poles.data()), 1, static_cast<int>(poles));
+    const TColStd_Array1OfReal K(*t, 1, static_cast<int>(knots));
+    const TColStd_Array1OfInteger M(*m, 1, static_cast<int>(knots));
+    return new Geom_BSplineCurve(P, K, M, 3, closed);
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("OpenCASCADE rejected the B-spline: ") + failure.GetMessageString());
   }

@@ -1,9 +1,11 @@
 #include "fairsplines/parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "fairsplines/vectorise.hpp"
 
 namespace fairsplines {
 
@@ -14,67 +16,239 @@ Parametrization parseParametrization(const std::string& name) {
   throw InputError("unknown parametrization '" + name + "': use 'chordal', 'centripetal' or 'uniform'");
 }
 
-SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
+namespace {
+
+/// Throws InputError naming the first point that is not finite.
+[[noreturn]] void throwNotFinite(PointsRef q) {
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    if (!q.row(i).allFinite()) {
+      std::ostringstream msg;
+      msg << "point " << i << " is not finite (NaN or infinity)";
+      throw InputError(msg.str());
+    }
+  }
+  throw InputError("a point is not finite (NaN or infinity)");
+}
+
+/// One pass over contiguous (n x D) points: their bounding box, whether all are finite
+/// (x - x is 0 exactly for finite x), and the chords |q_{i+1} - q_i|, i < n - 1. The loop
+/// has no branch and its reductions are declared to the compiler (OpenMP SIMD: min and
+/// max are exact in any order), so it vectorises.
+template <int D>
+FAIRSPLINES_VECTORISE bool boxAndChords(const double* __restrict data, Eigen::Index n, double* lo, double* hi,
+                                        double* __restrict chords) {
+  double lx = data[0], ly = data[1], lz = data[D - 1], hx = lx, hy = ly, hz = lz;
+  int bad = 0;
+#pragma omp simd reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) reduction(| : bad)
+  for (Eigen::Index i = 0; i < n - 1; ++i) {
+    const double* p = data + D * i;
+    const double x = p[0], y = p[1], dx = p[D] - x, dy = p[D + 1] - y;
+    lx = std::min(lx, x);
+    hx = std::max(hx, x);
+    ly = std::min(ly, y);
+    hy = std::max(hy, y);
+    bad |= (x - x != 0.0) | (y - y != 0.0);
+    double squared = dx * dx + dy * dy;
+    if constexpr (D == 3) {
+      const double z = p[2], dz = p[D + 2] - z;
+      lz = std::min(lz, z);
+      hz = std::max(hz, z);
+      bad |= z - z != 0.0;
+      squared += dz * dz;
+    }
+    chords[i] = std::sqrt(squared);
+  }
+  const double* last = data + D * (n - 1);
+  double l[3] = {lx, ly, lz}, h[3] = {hx, hy, hz};
+  for (int c = 0; c < D; ++c) {
+    lo[c] = std::min(l[c], last[c]);
+    hi[c] = std::max(h[c], last[c]);
+    bad |= last[c] - last[c] != 0.0;
+  }
+  return bad == 0;
+}
+
+/// Whether any of the first m chords is <= tol (a reduction without branches).
+FAIRSPLINES_VECTORISE bool anyAtMost(const double* __restrict chords, Eigen::Index m, double tol) {
+  int close = 0;
+#pragma omp simd reduction(| : close)
+  for (Eigen::Index i = 0; i < m; ++i) close |= chords[i] <= tol;
+  return close != 0;
+}
+
+/// Bounding box and finiteness alone (for passes that compute the chords later).
+template <int D>
+FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index n, double* lo, double* hi) {
+  double lx = data[0], ly = data[1], lz = data[D - 1], hx = lx, hy = ly, hz = lz;
+  int bad = 0;
+#pragma omp simd reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) reduction(| : bad)
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double* p = data + D * i;
+    const double x = p[0], y = p[1];
+    lx = std::min(lx, x);
+    hx = std::max(hx, x);
+    ly = std::min(ly, y);
+    hy = std::max(hy, y);
+    bad |= (x - x != 0.0) | (y - y != 0.0);
+    if constexpr (D == 3) {
+      const double z = p[2];
+      lz = std::min(lz, z);
+      hz = std::max(hz, z);
+      bad |= z - z != 0.0;
+    }
+  }
+  const double l[3] = {lx, ly, lz}, h[3] = {hx, hy, hz};
+  for (int c = 0; c < D; ++c) {
+    lo[c] = l[c];
+    hi[c] = h[c];
+  }
+  return bad == 0;
+}
+
+/// The chords of segments from..to-1 (point i to i + 1) to chords[0..to-from-1].
+template <int D>
+FAIRSPLINES_VECTORISE void chordsOf(const double* __restrict data, Eigen::Index from, Eigen::Index to,
+                                    double* __restrict chords) {
+  for (Eigen::Index i = from; i < to; ++i) {
+    const double* p = data + D * i;
+    double squared = 0.0;
+    for (int c = 0; c < D; ++c) {
+      const double d = p[D + c] - p[c];
+      squared += d * d;
+    }
+    chords[i - from] = std::sqrt(squared);
+  }
+}
+
+/// The bounding-box diagonal, or InputError when all points coincide.
+template <int D>
+double checkedSize(const double* lo, const double* hi) {
+  // Coincidence is judged relative to the size of the data.
+  double squared = 0.0, largest = 0.0;
+  for (int c = 0; c < D; ++c) {
+    squared += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    largest = std::max(largest, std::max(std::abs(lo[c]), std::abs(hi[c])));
+  }
+  const double size = std::sqrt(squared);
+  if (size <= 1e-300 || size <= 1e-14 * largest) throw InputError("all points coincide");
+  return size;
+}
+
+/// InputError naming points i and j as coincident.
+[[noreturn]] void throwCoincide(Eigen::Index i, Eigen::Index j, bool closed) {
+  std::ostringstream msg;
+  msg << "points " << i << " and " << j << " coincide";
+  if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
+  throw InputError(msg.str());
+}
+
+/// Validation of contiguous rows; chords to `chords` (room for n values). Returns the size.
+template <int D>
+double validateContiguous(PointsRef q, bool closed, double* chords) {
+  const Eigen::Index n = q.rows();
+  const double* data = q.data();
+  double lo[D], hi[D];
+  if (!boxAndChords<D>(data, n, lo, hi, chords)) throwNotFinite(q);
+  const double size = checkedSize<D>(lo, hi);
+  const double tol = 1e-12 * size;
+  const Eigen::Index segments = closed ? n : n - 1;
+  if (closed) {
+    double last = 0.0;
+    for (int c = 0; c < D; ++c) {
+      const double d = data[c] - data[D * (n - 1) + c];
+      last += d * d;
+    }
+    chords[n - 1] = std::sqrt(last);
+  }
+  const bool close = anyAtMost(chords, segments, tol);
+  if (close) {  // name the first pair
+    for (Eigen::Index i = 0; i < segments; ++i) {
+      if (chords[i] <= tol) throwCoincide(i, i + 1 == n ? 0 : i + 1, closed);
+    }
+  }
+  return size;
+}
+
+}  // namespace
+
+namespace detail {
+
+namespace {
+
+void checkShape(PointsRef q, bool closed, int minPoints, const char* method) {
   const Eigen::Index n = q.rows();
   if (q.cols() != 2 && q.cols() != 3) {
     std::ostringstream msg;
     msg << "points must have 2 or 3 coordinates, got " << q.cols();
     throw InputError(msg.str());
   }
-  if (n < minPoints) {
+  if (n < minPoints || n < 1) {
     std::ostringstream msg;
     msg << method << " needs at least " << minPoints << (closed ? " points on a closed curve" : " points")
         << ", got " << n;
     throw InputError(msg.str());
   }
-  if (!q.allFinite()) {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (!q.row(i).allFinite()) {
-        std::ostringstream msg;
-        msg << "point " << i << " is not finite (NaN or infinity)";
-        throw InputError(msg.str());
-      }
-    }
-  }
-  // Coincidence is judged relative to the size of the data.
-  const Eigen::RowVectorXd lo = q.colwise().minCoeff(), hi = q.colwise().maxCoeff();
-  SampleInfo info;
-  info.size = (hi - lo).norm();
-  if (info.size <= 1e-300 || info.size <= 1e-14 * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff())) {
-    throw InputError("all points coincide");
-  }
-  const double tol = 1e-12 * info.size;
-  const Eigen::Index segments = closed ? n : n - 1;
-  info.chords.resize(segments);
-  const int dim = static_cast<int>(q.cols());
-  const double* data = q.data();
-  for (Eigen::Index i = 0; i < segments; ++i) {
-    const Eigen::Index j = i + 1 == n ? 0 : i + 1;
-    double squared = 0.0;
-    for (int c = 0; c < dim; ++c) {
-      const double d = data[dim * j + c] - data[dim * i + c];
-      squared += d * d;
-    }
-    info.chords[i] = std::sqrt(squared);
-    if (info.chords[i] <= tol) {
-      std::ostringstream msg;
-      msg << "points " << i << " and " << j << " coincide";
-      if (closed && j == 0) msg << " (the last point repeats the first: leave it out for closed data)";
-      throw InputError(msg.str());
-    }
-  }
-  return info;
 }
 
-Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
-  Eigen::VectorXd t(chords.size() + 1);
-  t[0] = 0.0;
-  for (Eigen::Index i = 0; i < chords.size(); ++i) {
+}  // namespace
+
+double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords) {
+  checkShape(q, closed, minPoints, method);
+  // The passes read rows as one contiguous block (as numpy's C order gives them).
+  if (q.outerStride() != q.cols()) return validateSamplesInto(PointMatrix(q), closed, minPoints, method, chords);
+  return q.cols() == 2 ? validateContiguous<2>(q, closed, chords) : validateContiguous<3>(q, closed, chords);
+}
+
+double openSampleSize(PointsRef q, int minPoints, const char* method) {
+  checkShape(q, false, minPoints, method);
+  if (q.outerStride() != q.cols()) return openSampleSize(PointMatrix(q), minPoints, method);
+  double lo[3], hi[3];
+  const bool finite = q.cols() == 2 ? finiteBox<2>(q.data(), q.rows(), lo, hi) : finiteBox<3>(q.data(), q.rows(), lo, hi);
+  if (!finite) throwNotFinite(q);
+  return q.cols() == 2 ? checkedSize<2>(lo, hi) : checkedSize<3>(lo, hi);
+}
+
+void extendParameters(PointsRef q, Eigen::Index from, Eigen::Index to, Parametrization kind, double size, double* t) {
+  const double tol = 1e-12 * size;
+  constexpr Eigen::Index kChunk = 512;
+  double chords[kChunk];
+  for (Eigen::Index s = from; s < to; s += kChunk) {
+    const Eigen::Index e = std::min(s + kChunk, to);
+    if (q.cols() == 2) chordsOf<2>(q.data(), s, e, chords);
+    else chordsOf<3>(q.data(), s, e, chords);
+    if (anyAtMost(chords, e - s, tol)) {
+      for (Eigen::Index i = s; i < e; ++i) {
+        if (chords[i - s] <= tol) throwCoincide(i, i + 1, false);
+      }
+    }
+    if (s == 0) t[0] = 0.0;
+    parametersInto(chords, e - s, kind, t + s, false);
+  }
+}
+
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first) {
+  if (first) t[0] = 0.0;
+  // Reads chord i before writing t[i + 1]: chords may be t + 1.
+  for (Eigen::Index i = 0; i < count; ++i) {
     double h = 1.0;
     if (kind == Parametrization::Chordal) h = chords[i];
     else if (kind == Parametrization::Centripetal) h = std::sqrt(chords[i]);
     t[i + 1] = t[i] + h;
   }
+}
+
+}  // namespace detail
+
+SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* method) {
+  SampleInfo info;
+  info.chords.resize(std::max<Eigen::Index>(closed ? q.rows() : q.rows() - 1, 0));
+  info.size = detail::validateSamplesInto(q, closed, minPoints, method, info.chords.data());
+  return info;
+}
+
+Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind) {
+  Eigen::VectorXd t(chords.size() + 1);
+  detail::parametersInto(chords.data(), chords.size(), kind, t.data());
   return t;
 }
 

@@ -32,4 +32,25 @@ Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed);
 /// increasing. Returns them; throws InputError naming the first bad one.
 Eigen::VectorXd validatedParameters(const Eigen::VectorXd& t, Eigen::Index n, bool closed);
 
+namespace detail {
+
+/// validateSamples writing the chords to `chords` (room for one per segment: n - 1, or n
+/// when closed) instead of a new vector. Returns the bounding-box diagonal.
+double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
+
+/// parameters() into t (count + 1 values); chords may be t + 1 (computed in place).
+/// With first = false, t[0] is taken as given (a continuation).
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first = true);
+
+/// validateSamplesInto + parametersInto for open data in two parts, so that a pass can
+/// stream: openSampleSize makes every check but the coincidence of consecutive points
+/// (those before it, in the same order) and returns the bounding-box diagonal;
+/// extendParameters(q, from, to, ...) then writes t[from + 1..to] (t[0] = 0 when from
+/// is 0, else t[from] must be there) from the chords of segments from..to-1, throwing
+/// the same InputError for the first coincident pair. q must be contiguous.
+double openSampleSize(PointsRef q, int minPoints, const char* method);
+void extendParameters(PointsRef q, Eigen::Index from, Eigen::Index to, Parametrization kind, double size, double* t);
+
+}  // namespace detail
+
 }  // namespace fairsplines
