@@ -559,3 +559,29 @@ TEST(PartialTurn, OpenSphereZoneAndConesBlendC2WithDefaultAndUserRings) {
   EXPECT_LT(seams(joined).worst, 1e-8);
   EXPECT_THROW(joinShapes(a, coneShape(f, 2.9, -0.2, nonUniformTurn(), vec({3.0, 4.0}))), InputError);
 }
+
+TEST(EditedBlend, PartialTurnEditedStructureIsC2) {
+  const ShapeFrame f = tilted();
+  ShapeOfRevolution zone;
+  zone.frame = f;
+  zone.size0 = 1.0;
+  zone.around = vec({0.3, 1.0, 2.2, 2.6, 3.9});
+  zone.profile = vec({-0.6, 0.1, 0.5, 0.8});
+  G2Surface g = sphereZone(f, 1.0, zone.around, zone.profile);
+  const auto h = g.point(1, 2, 2, 3);
+  const Eigen::Vector3d p = h.head<3>().transpose() / h[3];
+  g.setControl(1, 2, 2, 3, f.origin + 1.1 * (p - f.origin), h[3]);
+  const BlendComplex c = blendEdited(zone, g, CircleReparam::Sigma);
+  EXPECT_FALSE(c.closedU);
+  EXPECT_LT(seams(c).worst, 1e-8);
+  // The last arc (not next to the edit) stays on the sphere.
+  double worst = 0.0;
+  for (const TaggedPatch& patch : c.patches) {
+    if (patch.role != TaggedPatch::Role::Basic || patch.uPiece != c.piecesU - 1) continue;
+    const Handle(Geom_BSplineSurface) s = patchToOcct(patch);
+    for (int a = 0; a <= 8; ++a) {
+      for (int b = 0; b <= 8; ++b) worst = std::max(worst, std::abs(localOf(f, s->Value(a / 8.0, b / 8.0)).norm() - 1.0));
+    }
+  }
+  EXPECT_LT(worst, 1e-10);
+}

@@ -808,9 +808,9 @@ BlendComplex blendEdited(const ShapeOfRevolution& shape, const G2Surface& edited
       for (int I = 0; I < n; ++I) {
         for (int r = 0; r < 4; ++r) cubic.row(4 * I + r) = edited.point(I, J, r, sv);
       }
-      C2SexticSpline layer = g2ToC2(cubic, maps.maps, maps.betaPieces, true);
+      C2SexticSpline layer = g2ToC2(cubic, maps.maps, maps.betaPieces, side.lon.closed);
       const int P = layer.pieces();
-      for (int i = 0; i < n; ++i) {
+      for (int i = side.lon.closed ? 0 : 1; i < n; ++i) {
         const int k = layer.firstPiece[i], left = (k + P - 1) % P;
         PointMatrix a = layer.bezier.middleRows(7 * left, 7), b = layer.bezier.middleRows(7 * k, 7);
         adjustC2(a, b, layer.beta[k]);
