@@ -305,3 +305,13 @@ def test_c1_continuity_builds_the_section_5_blend(doc, kind):
     obj.Continuity = "C2"
     doc.recompute()
     assert obj.Patches == c2.Patches
+
+
+def test_a_partial_turn_builds_an_open_blend(doc):
+    obj = make_blend_shape(doc, "Cylinder", Angles=[0.0, 60.0, 150.0, 200.0])
+    assert obj.Status == "ok", obj.Status
+    assert not obj.Uniform and obj.Shape.isValid()
+    assert obj.Patches == "basic 27, transition 9, freeform 9"  # rho: three pieces for each of the three arcs
+    points = surface_points(obj.Shape)
+    angles = np.mod(np.degrees(np.arctan2(points[:, 1], points[:, 0])) + 1e-6, 360.0) - 1e-6
+    assert angles.max() < 200.0 + 1e-6 and angles.max() > 199.0  # it spans the partial turn only
