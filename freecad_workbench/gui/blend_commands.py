@@ -1,9 +1,10 @@
 """The blending command (GUI only): a Blend basic shape, its task panel and its view provider.
 The command records a replayable macro line.
 
-FairSplines_BlendBasicShape   a sphere zone, cylinder, cone or torus joined C2 to a free-form
-                              ring (blending paper, Section 4.2); its panel opens and previews
-                              live; the shell is shown with zebra shading to judge the seams
+FairSplines_BlendBasicShape   a sphere zone, cylinder, cone or torus joined C2 (Section 4.2) or
+                              C1 (Section 5) to a free-form ring, a selected B-spline face or
+                              another Blend basic shape (blending paper); its panel opens and
+                              previews live; the shell is shown with zebra shading
 """
 import FreeCAD
 import FreeCADGui
@@ -121,8 +122,9 @@ class BlendBasicShapeCommand:
             "MenuText": QT_TRANSLATE_NOOP(NAME, "Blend basic shape"),
             "ToolTip": QT_TRANSLATE_NOOP(
                 NAME,
-                "A sphere zone, cylinder, cone or torus kept exact and joined C2 to a free-form ring\n"
-                "(non-uniform partitions allowed). Set it up in the panel; zebra stripes show the seams.",
+                "A sphere zone, cylinder, cone or torus kept exact and joined C2 (or C1) to a free-form\n"
+                "ring, a selected B-spline face or another basic shape (non-uniform partitions allowed).\n"
+                "Set it up in the panel; zebra stripes show the seams.",
             ),
         }
 
