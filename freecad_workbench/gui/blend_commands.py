@@ -360,10 +360,14 @@ class BlendShapePanel(LiveEditPanel):
             self.uniform.setChecked(on)
             self._updating = False
 
+    def _set_choice(self, prop, value, combo, choices):
+        """Set an enumeration property from its combo box and recompute."""
+        if not self._updating and value != getattr(self.obj, prop):
+            self._apply([(prop, value)])
+            self._select(combo, choices.index(value))
+
     def set_method(self, method):
-        if not self._updating and method != self.obj.Method:
-            self._apply([("Method", method)])
-            self._select(self.method, METHODS.index(method))
+        self._set_choice("Method", method, self.method, METHODS)
 
     def set_naive(self, on):
         if not self._updating and bool(on) != bool(self.obj.Naive):
@@ -374,14 +378,10 @@ class BlendShapePanel(LiveEditPanel):
                 self._updating = False
 
     def set_continuity(self, continuity):
-        if not self._updating and continuity != self.obj.Continuity:
-            self._apply([("Continuity", continuity)])
-            self._select(self.continuity, CONTINUITIES.index(continuity))
+        self._set_choice("Continuity", continuity, self.continuity, CONTINUITIES)
 
     def set_interface(self, interface):
-        if not self._updating and interface != self.obj.Interface:
-            self._apply([("Interface", interface)])
-            self._select(self.interface, INTERFACES.index(interface))
+        self._set_choice("Interface", interface, self.interface, INTERFACES)
 
     def set_freeform(self, link):
         """Join the linked B-spline face ((object, ["FaceN"])), or the default ring (None)."""
