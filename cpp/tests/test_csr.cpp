@@ -2,13 +2,16 @@
 #include <gtest/gtest.h>
 
 #include <Geom_BSplineCurve.hxx>
+#include <cmath>
 #include <random>
+#include <string>
 
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/csr.hpp"
 #include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/occt.hpp"
+#include "fairsplines/parameters.hpp"
 #include "test_support.hpp"
 
 using namespace fairsplines;
@@ -197,6 +200,89 @@ TEST(Csr, FusedOcctRouteIsBitExact) {
   PointMatrix dup(4, 3);
   dup << 0, 0, 0, 1, 1, 0, 1, 1, 0, 2, 0, 0;
   EXPECT_THROW(csrSplineOcct(dup), InputError);
+}
+
+TEST(Csr, StreamingPassMatchesTheReference) {
+  // Open data from kVectorisedFrom points on takes one streaming pass (bounding box, then
+  // window by window: differences, chords, parameters, poles). It must give the knots of
+  // validateSamples + parameters to the bit and the poles of the reference strategy,
+  // also where the last window is shifted back and for every parametrization.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int dim : {2, 3}) {
+    for (int n : {128, 131, 2049, 2050, 5003}) {
+      PointMatrix q(n, dim);
+      for (int i = 0; i < n; ++i) {
+        const double a = 6 * M_PI * i / n;
+        q(i, 0) = (1 + a) * std::cos(a) + 0.05 * unit(rng);
+        q(i, 1) = (1 + a) * std::sin(a) + 0.05 * unit(rng);
+        if (dim == 3) q(i, 2) = 0.1 * a + 0.05 * unit(rng);
+      }
+      for (Parametrization kind : {Parametrization::Chordal, Parametrization::Centripetal, Parametrization::Uniform}) {
+        CsrOptions options;
+        options.parametrization = kind;
+        const BSplineCurve fused = csrSpline(q, options);
+        const SampleInfo info = validateSamples(q, false, 3, "test");
+        const Eigen::VectorXd t = parameters(info.chords, kind);
+        const BSplineCurve reference = detail::fitCubic(q, t, false, info.size, options.epsilon, options.rule, false,
+                                                        detail::CsrStrategy::Streaming);
+        ASSERT_EQ(fused.knots.size(), t.size());
+        EXPECT_EQ((fused.knots - t).cwiseAbs().maxCoeff(), 0.0) << dim << " " << n;
+        ASSERT_EQ(fused.poles.rows(), reference.poles.rows());
+        EXPECT_LT((fused.poles - reference.poles).cwiseAbs().maxCoeff(), 1e-13 * (1 + 6 * M_PI)) << dim << " " << n;
+      }
+    }
+  }
+}
+
+TEST(Csr, StreamingPassChecksEveryPoint) {
+  // The streaming pass reads the points four at a time and the rest one by one: a bad
+  // value anywhere is named, and the bounding box (which scales epsilon and the
+  // coincidence tolerance) is that of every point.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto message = [](const PointMatrix& q) {
+    try {
+      csrSpline(q);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  for (int n : {203, 204, 205, 206}) {
+    for (int dim : {2, 3}) {
+      PointMatrix q(n, dim);
+      for (int i = 0; i < n; ++i) {
+        for (int c = 0; c < dim; ++c) q(i, c) = i + unit(rng);
+      }
+      for (int bad : {0, 1, 101, n - 3, n - 2, n - 1}) {
+        for (int c = 0; c < dim; ++c) {
+          for (double value : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+            PointMatrix p = q;
+            p(bad, c) = value;
+            EXPECT_NE(message(p).find("point " + std::to_string(bad) + " is not finite"), std::string::npos)
+                << n << " " << dim << " " << bad << " " << c;
+          }
+        }
+        // An extreme value at this point and coordinate sets the box: the size agrees
+        // with validateSamples, which reads the points in another order.
+        for (int c = 0; c < dim; ++c) {
+          for (double value : {-1e3, 1e3}) {
+            PointMatrix p = q;
+            p(bad, c) = value;
+            EXPECT_EQ(detail::openSampleSize(p, 3, "test"), validateSamples(p, false, 3, "test").size);
+          }
+        }
+      }
+      EXPECT_EQ(detail::openSampleSize(q, 3, "test"), validateSamples(q, false, 3, "test").size);
+      PointMatrix same = PointMatrix::Constant(n, dim, -2.5);
+      EXPECT_NE(message(same).find("all points coincide"), std::string::npos);
+      PointMatrix dup = q;
+      dup.row(n - 2) = dup.row(n - 3);
+      EXPECT_NE(message(dup).find("points " + std::to_string(n - 3) + " and " + std::to_string(n - 2) + " coincide"),
+                std::string::npos);
+    }
+  }
 }
 
 TEST(Csr, StreamingAndVectorisedStrategiesAgree) {

@@ -188,7 +188,7 @@ inline double weightOf(double a, double b, double epsilon) {
 /// written first. Arrays whose distance is a multiple of 4 KiB alias in the caches when
 /// a loop streams through several at once: the stride is padded by one cache line.
 struct WindowArrays {
-  double* dd[3];     // first divided differences (q_{k+1} - q_k) / h_k of segment k
+  double* dd[3];     // q_{k+1} - q_k of segment k, then (pass A) divided by h_k
   double* D2[3];     // f_k''/2 of the quadratic interpolant f_k about t_k
   double* dv[3];     // f_k'(t_k)
   double* h;         // h_k = t_{k+1} - t_k
@@ -196,7 +196,8 @@ struct WindowArrays {
   double* mu;        // mu_k of eq. (6): weight of kappa_k against kappa_{k-1}
   double* aL;        // weight of p_k^L times h_{k-1}^2 / 3
   double* aR;        // weight of p_k^R times h_k^2 / 3
-  static constexpr int kArrays = 14;
+  double* chord;     // |q_{k+1} - q_k|
+  static constexpr int kArrays = 15;
 };
 
 class Workspace {
@@ -215,6 +216,7 @@ class Workspace {
     a.mu = p + 11 * stride;
     a.aL = p + 12 * stride;
     a.aR = p + 13 * stride;
+    a.chord = p + 14 * stride;
     return a;
   }
 
@@ -222,17 +224,38 @@ class Workspace {
   std::vector<double> storage_;
 };
 
-/// Pass A: first divided differences of the W - 1 segments of a window of contiguous
-/// (W x D) points, one reciprocal per segment.
+/// Pass 0: the differences q_{k+1} - q_k of the W - 1 segments of a window of contiguous
+/// (W x D) points, per coordinate, and with `chords` their lengths (summed in the order
+/// of validateSamples, so that the parameters are the same to the bit).
+template <int D, bool chords>
+inline __attribute__((always_inline)) void differences(const double* __restrict x, Eigen::Index W,
+                                                         double* __restrict ddx, double* __restrict ddy,
+                                                         double* __restrict ddz, double* __restrict chord) {
+  for (Eigen::Index k = 0; k + 1 < W; ++k) {
+    const double dx = x[D * (k + 1)] - x[D * k], dy = x[D * (k + 1) + 1] - x[D * k + 1];
+    ddx[k] = dx;
+    ddy[k] = dy;
+    double squared = dx * dx + dy * dy;
+    if constexpr (D == 3) {
+      const double dz = x[D * (k + 1) + 2] - x[D * k + 2];
+      ddz[k] = dz;
+      squared += dz * dz;
+    }
+    if constexpr (chords) chord[k] = std::sqrt(squared);
+  }
+}
+
+/// Pass A: first divided differences (q_{k+1} - q_k) / h_k in place, one reciprocal per
+/// segment.
 template <int D>
-inline __attribute__((always_inline)) void dividedDifferences(const double* __restrict x, const double* __restrict h,
-                                                                Eigen::Index W, double* __restrict ddx,
-                                                                double* __restrict ddy, double* __restrict ddz) {
+inline __attribute__((always_inline)) void dividedDifferences(const double* __restrict h, Eigen::Index W,
+                                                                double* __restrict ddx, double* __restrict ddy,
+                                                                double* __restrict ddz) {
   for (Eigen::Index k = 0; k + 1 < W; ++k) {
     const double r = 1.0 / h[k];
-    ddx[k] = (x[D * (k + 1)] - x[D * k]) * r;
-    ddy[k] = (x[D * (k + 1) + 1] - x[D * k + 1]) * r;
-    if constexpr (D == 3) ddz[k] = (x[D * (k + 1) + 2] - x[D * k + 2]) * r;
+    ddx[k] *= r;
+    ddy[k] *= r;
+    if constexpr (D == 3) ddz[k] *= r;
   }
 }
 
@@ -335,14 +358,14 @@ inline __attribute__((always_inline)) void poles(const double* __restrict x, con
   }
 }
 
-/// One window of W >= 3 contiguous points x (W x D) with h_k = t_{k+1} - t_k in a.h,
-/// solved as open data: its poles are rows 0..W+1 (row k + 1 for point k; rows 0, 1, W,
+/// One window of W >= 3 contiguous points x (W x D) with h_k = t_{k+1} - t_k in a.h and
+/// the differences of pass 0 in a.dd, solved as open data: its poles are rows 0..W+1 (row k + 1 for point k; rows 0, 1, W,
 /// W + 1 are the clamped ends). Writes rows rowFrom..rowTo to out + D * (row + rowShift).
 template <int D, EpsilonRule rule, bool quasiOnly>
 inline __attribute__((always_inline)) void windowPolesImpl(const double* x, const WindowArrays& a, Eigen::Index W,
                                                              double epsilon, double* out, Eigen::Index rowShift,
                                                              Eigen::Index rowFrom, Eigen::Index rowTo) {
-  dividedDifferences<D>(x, a.h, W, a.dd[0], a.dd[1], a.dd[2]);
+  dividedDifferences<D>(a.h, W, a.dd[0], a.dd[1], a.dd[2]);
   quadratics<D, !quasiOnly>(W, a.h, a.dd[0], a.dd[1], a.dd[2], a.D2[0], a.D2[1], a.D2[2], a.dv[0], a.dv[1], a.dv[2],
                             a.kappa);
   auto quadratic = [&](Eigen::Index k) {
@@ -398,6 +421,23 @@ WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
   return quasiOnly ? window3Quasi : rule == EpsilonRule::Additive ? window3Additive : window3Case;
 }
 
+/// Pass 0 of a window, with or without the chords, compiled likewise.
+using DifferencesFunction = void (*)(const double*, const WindowArrays&, Eigen::Index);
+#define FAIRSPLINES_DIFFERENCES(NAME, D, CHORDS)                                      \
+  FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W) { \
+    differences<D, CHORDS>(x, W, a.dd[0], a.dd[1], a.dd[2], a.chord);                 \
+  }
+FAIRSPLINES_DIFFERENCES(differences2, 2, false)
+FAIRSPLINES_DIFFERENCES(differences2Chords, 2, true)
+FAIRSPLINES_DIFFERENCES(differences3, 3, false)
+FAIRSPLINES_DIFFERENCES(differences3Chords, 3, true)
+#undef FAIRSPLINES_DIFFERENCES
+
+DifferencesFunction differencesFunction(int dim, bool chords) {
+  if (dim == 2) return chords ? differences2Chords : differences2;
+  return chords ? differences3Chords : differences3;
+}
+
 /// The window scratch of this thread.
 Workspace& threadWorkspace() {
   thread_local Workspace workspace;
@@ -411,6 +451,7 @@ void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& w
                       Eigen::Index window, double* out) {
   const Eigen::Index n = q.rows(), dim = q.cols();
   const WindowFunction solve = windowFunction(static_cast<int>(dim), weight.rule, quasiOnly);
+  const DifferencesFunction subtract = differencesFunction(static_cast<int>(dim), false);
   Workspace& workspace = threadWorkspace();
   if (!closed) {
     const Eigen::Index W = std::min(n, std::max<Eigen::Index>(window, 8));
@@ -419,6 +460,7 @@ void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& w
       s = std::min(s, n - W);
       for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];  // as csrPoles's h
       const bool atStart = s == 0, atEnd = s + W == n;
+      subtract(q.data() + dim * s, a, W);
       // Local rows 3..W-2 are the poles of points 2..W-3; global row = s + local row.
       solve(q.data() + dim * s, a, W, weight.epsilon, out, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
       if (atEnd) break;
@@ -438,6 +480,7 @@ void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& w
       wq.row(k) = q.row(i);
       if (k + 1 < W) a.h[k] = t[i + 1] - t[i];
     }
+    subtract(wq.data(), a, W);
     solve(wq.data(), a, W, weight.epsilon, out, s - 2, 3, std::min(W - 2, n + 1 - s));
   }
 }
@@ -545,21 +588,25 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
     cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
     return;
   }
-  // Open data in one streaming pass after the bounding box: each window's chords and
-  // parameters are computed just before its poles, while its points are in cache. The
-  // checks, their order and every value are those of the path above.
+  // Open data in one streaming pass after the bounding box: each window's differences,
+  // chords and parameters are computed just before its poles, while its points are in
+  // cache. The checks, their order and every value are those of the path above.
   const double size = openSampleSize(q, 3, "the csr-spline");
   const WindowFunction solve = windowFunction(static_cast<int>(dim), options.rule, false);
+  const DifferencesFunction subtract = differencesFunction(static_cast<int>(dim), true);
   const Eigen::Index W = std::min(n, kWindow);
   const WindowArrays a = threadWorkspace().arrays(W);
   Eigen::Index known = 0;  // t[0..known] are computed (none yet)
   for (Eigen::Index s = 0;; s += W - 4) {
     s = std::min(s, n - W);
-    extendParameters(q, known, s + W - 1, options.parametrization, size, t);
+    const double* x = q.data() + dim * s;
+    subtract(x, a, W);
+    // The segments known..s+W-2 are new: their chords are a.chord[known - s..W-2].
+    extendParameters(a.chord + (known - s), known, s + W - 1, options.parametrization, size, t);
     known = s + W - 1;
     for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];
     const bool atStart = s == 0, atEnd = s + W == n;
-    solve(q.data() + dim * s, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
+    solve(x, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
     if (atEnd) break;
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
@@ -76,48 +77,52 @@ FAIRSPLINES_VECTORISE bool anyAtMost(const double* __restrict chords, Eigen::Ind
   return close != 0;
 }
 
-/// Bounding box and finiteness alone (for passes that compute the chords later).
+/// Bounding box and finiteness alone (for passes that compute the chords later). The
+/// rows are read as one flat array, four points (4 D doubles) at a time: lane j of the
+/// block accumulates coordinate j % D, so the loop needs no shuffles. Min and max are
+/// exact in any order; v - v is 0 for finite v and NaN otherwise, so a sum of them is 0
+/// exactly when every coordinate is finite.
 template <int D>
 FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index n, double* lo, double* hi) {
-  double lx = data[0], ly = data[1], lz = data[D - 1], hx = lx, hy = ly, hz = lz;
-  int bad = 0;
-#pragma omp simd reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) reduction(| : bad)
-  for (Eigen::Index i = 0; i < n; ++i) {
+  for (int c = 0; c < D; ++c) lo[c] = hi[c] = data[c];
+  double sum = 0.0;
+  Eigen::Index i = 0;
+#if defined(__GNUC__)
+  // GCC's vector extension: four doubles, D vectors per block of four points.
+  typedef double V __attribute__((vector_size(32)));
+  V l[D], h[D], bad[D];
+  for (int v = 0; v < D; ++v) {
+    for (int j = 0; j < 4; ++j) l[v][j] = h[v][j] = data[(4 * v + j) % D];
+    bad[v] = V{0.0, 0.0, 0.0, 0.0};
+  }
+  for (; i + 4 <= n; i += 4) {
     const double* p = data + D * i;
-    const double x = p[0], y = p[1];
-    lx = std::min(lx, x);
-    hx = std::max(hx, x);
-    ly = std::min(ly, y);
-    hy = std::max(hy, y);
-    bad |= (x - x != 0.0) | (y - y != 0.0);
-    if constexpr (D == 3) {
-      const double z = p[2];
-      lz = std::min(lz, z);
-      hz = std::max(hz, z);
-      bad |= z - z != 0.0;
+    for (int v = 0; v < D; ++v) {
+      V x;
+      std::memcpy(&x, p + 4 * v, sizeof x);
+      l[v] = x < l[v] ? x : l[v];
+      h[v] = x > h[v] ? x : h[v];
+      bad[v] += x - x;
     }
   }
-  const double l[3] = {lx, ly, lz}, h[3] = {hx, hy, hz};
-  for (int c = 0; c < D; ++c) {
-    lo[c] = l[c];
-    hi[c] = h[c];
+  for (int v = 0; v < D; ++v) {
+    for (int j = 0; j < 4; ++j) {
+      const int c = (4 * v + j) % D;
+      lo[c] = std::min(lo[c], l[v][j]);
+      hi[c] = std::max(hi[c], h[v][j]);
+      sum += bad[v][j];
+    }
   }
-  return bad == 0;
-}
-
-/// The chords of segments from..to-1 (point i to i + 1) to chords[0..to-from-1].
-template <int D>
-FAIRSPLINES_VECTORISE void chordsOf(const double* __restrict data, Eigen::Index from, Eigen::Index to,
-                                    double* __restrict chords) {
-  for (Eigen::Index i = from; i < to; ++i) {
-    const double* p = data + D * i;
-    double squared = 0.0;
+#endif
+  for (; i < n; ++i) {  // the rest (all of it without the vector extension)
     for (int c = 0; c < D; ++c) {
-      const double d = p[D + c] - p[c];
-      squared += d * d;
+      const double v = data[D * i + c];
+      lo[c] = std::min(lo[c], v);
+      hi[c] = std::max(hi[c], v);
+      sum += v - v;
     }
-    chords[i - from] = std::sqrt(squared);
   }
+  return sum == 0.0;
 }
 
 /// The bounding-box diagonal, or InputError when all points coincide.
@@ -208,21 +213,29 @@ double openSampleSize(PointsRef q, int minPoints, const char* method) {
   return q.cols() == 2 ? checkedSize<2>(lo, hi) : checkedSize<3>(lo, hi);
 }
 
-void extendParameters(PointsRef q, Eigen::Index from, Eigen::Index to, Parametrization kind, double size, double* t) {
+void extendParameters(const double* chords, Eigen::Index from, Eigen::Index to, Parametrization kind, double size,
+                      double* t) {
   const double tol = 1e-12 * size;
-  constexpr Eigen::Index kChunk = 512;
-  double chords[kChunk];
-  for (Eigen::Index s = from; s < to; s += kChunk) {
-    const Eigen::Index e = std::min(s + kChunk, to);
-    if (q.cols() == 2) chordsOf<2>(q.data(), s, e, chords);
-    else chordsOf<3>(q.data(), s, e, chords);
-    if (anyAtMost(chords, e - s, tol)) {
-      for (Eigen::Index i = s; i < e; ++i) {
-        if (chords[i - s] <= tol) throwCoincide(i, i + 1, false);
-      }
+  if (from == 0) t[0] = 0.0;
+  bool close = false;
+  // One loop per kind, each a chain of additions with the checks alongside.
+  if (kind == Parametrization::Chordal) {
+    for (Eigen::Index i = from; i < to; ++i) {
+      const double c = chords[i - from];
+      close |= c <= tol;
+      t[i + 1] = t[i] + c;
     }
-    if (s == 0) t[0] = 0.0;
-    parametersInto(chords, e - s, kind, t + s, false);
+  } else {
+    for (Eigen::Index i = from; i < to; ++i) {
+      const double c = chords[i - from];
+      close |= c <= tol;
+      t[i + 1] = t[i] + (kind == Parametrization::Centripetal ? std::sqrt(c) : 1.0);
+    }
+  }
+  if (close) {  // name the first pair
+    for (Eigen::Index i = from; i < to; ++i) {
+      if (chords[i - from] <= tol) throwCoincide(i, i + 1, false);
+    }
   }
 }
 

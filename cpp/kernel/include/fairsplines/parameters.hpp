@@ -45,11 +45,13 @@ void parametersInto(const double* chords, Eigen::Index count, Parametrization ki
 /// validateSamplesInto + parametersInto for open data in two parts, so that a pass can
 /// stream: openSampleSize makes every check but the coincidence of consecutive points
 /// (those before it, in the same order) and returns the bounding-box diagonal;
-/// extendParameters(q, from, to, ...) then writes t[from + 1..to] (t[0] = 0 when from
-/// is 0, else t[from] must be there) from the chords of segments from..to-1, throwing
-/// the same InputError for the first coincident pair. q must be contiguous.
+/// extendParameters(chords, from, to, ...) then writes t[from + 1..to] (t[0] = 0 when
+/// from is 0, else t[from] must be there) from the chords |q_{i+1} - q_i| of segments
+/// i = from..to-1 (chords[i - from]), throwing the same InputError for the first
+/// coincident pair.
 double openSampleSize(PointsRef q, int minPoints, const char* method);
-void extendParameters(PointsRef q, Eigen::Index from, Eigen::Index to, Parametrization kind, double size, double* t);
+void extendParameters(const double* chords, Eigen::Index from, Eigen::Index to, Parametrization kind, double size,
+                      double* t);
 
 }  // namespace detail
 
