@@ -196,8 +196,7 @@ struct WindowArrays {
   double* mu;        // mu_k of eq. (6): weight of kappa_k against kappa_{k-1}
   double* aL;        // weight of p_k^L times h_{k-1}^2 / 3
   double* aR;        // weight of p_k^R times h_k^2 / 3
-  double* chord;     // |q_{k+1} - q_k|
-  static constexpr int kArrays = 15;
+  static constexpr int kArrays = 14;
 };
 
 class Workspace {
@@ -216,7 +215,6 @@ class Workspace {
     a.mu = p + 11 * stride;
     a.aL = p + 12 * stride;
     a.aR = p + 13 * stride;
-    a.chord = p + 14 * stride;
     return a;
   }
 
@@ -225,24 +223,87 @@ class Workspace {
 };
 
 /// Pass 0: the differences q_{k+1} - q_k of the W - 1 segments of a window of contiguous
-/// (W x D) points, per coordinate, and with `chords` their lengths (summed in the order
-/// of validateSamples, so that the parameters are the same to the bit).
-template <int D, bool chords>
+/// (W x D) points, per coordinate.
+template <int D>
 inline __attribute__((always_inline)) void differences(const double* __restrict x, Eigen::Index W,
                                                          double* __restrict ddx, double* __restrict ddy,
-                                                         double* __restrict ddz, double* __restrict chord) {
+                                                         double* __restrict ddz) {
   for (Eigen::Index k = 0; k + 1 < W; ++k) {
+    ddx[k] = x[D * (k + 1)] - x[D * k];
+    ddy[k] = x[D * (k + 1) + 1] - x[D * k + 1];
+    if constexpr (D == 3) ddz[k] = x[D * (k + 1) + 2] - x[D * k + 2];
+  }
+}
+
+/// Pass 0 of the streaming pass over open data, where the window's parameters are made
+/// too. tw points at the parameter of the window's first point; t_0..t_{k0} are known,
+/// t_{k0+1}..t_{W-1} are new: t_{k+1} = t_k + |q_{k+1} - q_k| (chordal), its square root
+/// (centripetal) or 1 (uniform), the additions in order, as parametersInto makes them.
+/// Writes the differences to a.dd and h_k = t_{k+1} - t_k to a.h. Returns whether a new
+/// chord is at most `tol` (coincident points: the caller names them).
+///
+/// The chords are computed eight at a time before their eight additions, so that the
+/// processor overlaps the square roots of one strip with the chain of additions of the
+/// one before (as two passes, each would wait for the other's unit).
+template <int D, Parametrization kind>
+inline __attribute__((always_inline)) bool differencesAndParameters(const double* __restrict x, Eigen::Index W,
+                                                                      Eigen::Index k0, const WindowArrays& a,
+                                                                      double* __restrict tw, double tol) {
+  double* __restrict ddx = a.dd[0];
+  double* __restrict ddy = a.dd[1];
+  double* __restrict ddz = a.dd[2];
+  double* __restrict h = a.h;
+  auto difference = [&](Eigen::Index k) {
     const double dx = x[D * (k + 1)] - x[D * k], dy = x[D * (k + 1) + 1] - x[D * k + 1];
     ddx[k] = dx;
     ddy[k] = dy;
-    double squared = dx * dx + dy * dy;
+    double squared = dx * dx + dy * dy;  // the order of validateSamples
     if constexpr (D == 3) {
       const double dz = x[D * (k + 1) + 2] - x[D * k + 2];
       ddz[k] = dz;
       squared += dz * dz;
     }
-    if constexpr (chords) chord[k] = std::sqrt(squared);
+    return squared;
+  };
+  auto step = [](double chord) {
+    if constexpr (kind == Parametrization::Chordal) return chord;
+    else if constexpr (kind == Parametrization::Centripetal) return std::sqrt(chord);
+    else return 1.0;
+  };
+  Eigen::Index k = 0;
+  for (; k < k0; ++k) {  // known parameters
+    difference(k);
+    h[k] = tw[k + 1] - tw[k];
   }
+  constexpr int kStrip = 8;
+  double shortest[kStrip];  // per lane, the shortest new chord
+  for (int j = 0; j < kStrip; ++j) shortest[j] = HUGE_VAL;
+  double tk = tw[k];
+  for (; k + kStrip < W; k += kStrip) {
+    double increment[kStrip];
+    for (int j = 0; j < kStrip; ++j) {  // vectorised
+      const double chord = std::sqrt(difference(k + j));
+      shortest[j] = std::min(shortest[j], chord);
+      increment[j] = step(chord);
+    }
+    for (int j = 0; j < kStrip; ++j) {  // the chain
+      const double next = tk + increment[j];
+      tw[k + j + 1] = next;
+      h[k + j] = next - tk;
+      tk = next;
+    }
+  }
+  for (; k + 1 < W; ++k) {
+    const double chord = std::sqrt(difference(k));
+    shortest[0] = std::min(shortest[0], chord);
+    const double next = tk + step(chord);
+    tw[k + 1] = next;
+    h[k] = next - tk;
+    tk = next;
+  }
+  bool close = false;
+  for (int j = 0; j < kStrip; ++j) close |= shortest[j] <= tol;
+  return close;
 }
 
 /// Pass A: first divided differences (q_{k+1} - q_k) / h_k in place, one reciprocal per
@@ -421,21 +482,37 @@ WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
   return quasiOnly ? window3Quasi : rule == EpsilonRule::Additive ? window3Additive : window3Case;
 }
 
-/// Pass 0 of a window, with or without the chords, compiled likewise.
+/// Pass 0 of a window, compiled likewise.
 using DifferencesFunction = void (*)(const double*, const WindowArrays&, Eigen::Index);
-#define FAIRSPLINES_DIFFERENCES(NAME, D, CHORDS)                                      \
+#define FAIRSPLINES_DIFFERENCES(NAME, D)                                                    \
   FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W) { \
-    differences<D, CHORDS>(x, W, a.dd[0], a.dd[1], a.dd[2], a.chord);                 \
+    differences<D>(x, W, a.dd[0], a.dd[1], a.dd[2]);                                         \
   }
-FAIRSPLINES_DIFFERENCES(differences2, 2, false)
-FAIRSPLINES_DIFFERENCES(differences2Chords, 2, true)
-FAIRSPLINES_DIFFERENCES(differences3, 3, false)
-FAIRSPLINES_DIFFERENCES(differences3Chords, 3, true)
+FAIRSPLINES_DIFFERENCES(differences2, 2)
+FAIRSPLINES_DIFFERENCES(differences3, 3)
 #undef FAIRSPLINES_DIFFERENCES
 
-DifferencesFunction differencesFunction(int dim, bool chords) {
-  if (dim == 2) return chords ? differences2Chords : differences2;
-  return chords ? differences3Chords : differences3;
+/// differencesAndParameters, compiled likewise.
+using ParametersFunction = bool (*)(const double*, Eigen::Index, Eigen::Index, const WindowArrays&, double*, double);
+#define FAIRSPLINES_PARAMETERS(NAME, D, KIND)                                                                     \
+  FAIRSPLINES_VECTORISE bool NAME(const double* x, Eigen::Index W, Eigen::Index k0, const WindowArrays& a, double* tw, \
+                                  double tol) {                                                                   \
+    return differencesAndParameters<D, KIND>(x, W, k0, a, tw, tol);                                               \
+  }
+FAIRSPLINES_PARAMETERS(parameters2Chordal, 2, Parametrization::Chordal)
+FAIRSPLINES_PARAMETERS(parameters2Centripetal, 2, Parametrization::Centripetal)
+FAIRSPLINES_PARAMETERS(parameters2Uniform, 2, Parametrization::Uniform)
+FAIRSPLINES_PARAMETERS(parameters3Chordal, 3, Parametrization::Chordal)
+FAIRSPLINES_PARAMETERS(parameters3Centripetal, 3, Parametrization::Centripetal)
+FAIRSPLINES_PARAMETERS(parameters3Uniform, 3, Parametrization::Uniform)
+#undef FAIRSPLINES_PARAMETERS
+
+ParametersFunction parametersFunction(int dim, Parametrization kind) {
+  switch (kind) {
+    case Parametrization::Chordal: return dim == 2 ? parameters2Chordal : parameters3Chordal;
+    case Parametrization::Centripetal: return dim == 2 ? parameters2Centripetal : parameters3Centripetal;
+    default: return dim == 2 ? parameters2Uniform : parameters3Uniform;
+  }
 }
 
 /// The window scratch of this thread.
@@ -451,7 +528,7 @@ void csrPolesWindowed(PointsRef q, const double* t, bool closed, const Weight& w
                       Eigen::Index window, double* out) {
   const Eigen::Index n = q.rows(), dim = q.cols();
   const WindowFunction solve = windowFunction(static_cast<int>(dim), weight.rule, quasiOnly);
-  const DifferencesFunction subtract = differencesFunction(static_cast<int>(dim), false);
+  const DifferencesFunction subtract = dim == 2 ? differences2 : differences3;
   Workspace& workspace = threadWorkspace();
   if (!closed) {
     const Eigen::Index W = std::min(n, std::max<Eigen::Index>(window, 8));
@@ -593,18 +670,18 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
   // cache. The checks, their order and every value are those of the path above.
   const double size = openSampleSize(q, 3, "the csr-spline");
   const WindowFunction solve = windowFunction(static_cast<int>(dim), options.rule, false);
-  const DifferencesFunction subtract = differencesFunction(static_cast<int>(dim), true);
+  const ParametersFunction subtract = parametersFunction(static_cast<int>(dim), options.parametrization);
   const Eigen::Index W = std::min(n, kWindow);
   const WindowArrays a = threadWorkspace().arrays(W);
-  Eigen::Index known = 0;  // t[0..known] are computed (none yet)
+  const double tol = 1e-12 * size;  // coincidence, as validateSamples judges it
+  t[0] = 0.0;
+  Eigen::Index known = 0;  // t[0..known] are computed
   for (Eigen::Index s = 0;; s += W - 4) {
     s = std::min(s, n - W);
     const double* x = q.data() + dim * s;
-    subtract(x, a, W);
-    // The segments known..s+W-2 are new: their chords are a.chord[known - s..W-2].
-    extendParameters(a.chord + (known - s), known, s + W - 1, options.parametrization, size, t);
+    // The segments known..s+W-2 are new.
+    if (subtract(x, W, known - s, a, t + s, tol)) throwFirstCoincident(q, known, s + W - 1, size);
     known = s + W - 1;
-    for (Eigen::Index k = 0; k + 1 < W; ++k) a.h[k] = t[s + k + 1] - t[s + k];
     const bool atStart = s == 0, atEnd = s + W == n;
     solve(x, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);
     if (atEnd) break;

@@ -213,30 +213,17 @@ double openSampleSize(PointsRef q, int minPoints, const char* method) {
   return q.cols() == 2 ? checkedSize<2>(lo, hi) : checkedSize<3>(lo, hi);
 }
 
-void extendParameters(const double* chords, Eigen::Index from, Eigen::Index to, Parametrization kind, double size,
-                      double* t) {
+void throwFirstCoincident(PointsRef q, Eigen::Index from, Eigen::Index to, double size) {
   const double tol = 1e-12 * size;
-  if (from == 0) t[0] = 0.0;
-  bool close = false;
-  // One loop per kind, each a chain of additions with the checks alongside.
-  if (kind == Parametrization::Chordal) {
-    for (Eigen::Index i = from; i < to; ++i) {
-      const double c = chords[i - from];
-      close |= c <= tol;
-      t[i + 1] = t[i] + c;
+  for (Eigen::Index i = from; i < to; ++i) {
+    double squared = 0.0;
+    for (Eigen::Index c = 0; c < q.cols(); ++c) {
+      const double d = q(i + 1, c) - q(i, c);
+      squared += d * d;
     }
-  } else {
-    for (Eigen::Index i = from; i < to; ++i) {
-      const double c = chords[i - from];
-      close |= c <= tol;
-      t[i + 1] = t[i] + (kind == Parametrization::Centripetal ? std::sqrt(c) : 1.0);
-    }
+    if (std::sqrt(squared) <= tol) throwCoincide(i, i + 1, false);
   }
-  if (close) {  // name the first pair
-    for (Eigen::Index i = from; i < to; ++i) {
-      if (chords[i - from] <= tol) throwCoincide(i, i + 1, false);
-    }
-  }
+  throw InputError("two consecutive points coincide");
 }
 
 void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first) {

@@ -42,16 +42,13 @@ double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* 
 /// With first = false, t[0] is taken as given (a continuation).
 void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first = true);
 
-/// validateSamplesInto + parametersInto for open data in two parts, so that a pass can
+/// The checks of validateSamplesInto for open data in two parts, so that a pass can
 /// stream: openSampleSize makes every check but the coincidence of consecutive points
-/// (those before it, in the same order) and returns the bounding-box diagonal;
-/// extendParameters(chords, from, to, ...) then writes t[from + 1..to] (t[0] = 0 when
-/// from is 0, else t[from] must be there) from the chords |q_{i+1} - q_i| of segments
-/// i = from..to-1 (chords[i - from]), throwing the same InputError for the first
-/// coincident pair.
+/// (those before it, in the same order) and returns the bounding-box diagonal, the size.
+/// A chord of at most 1e-12 size is a coincidence: throwFirstCoincident throws the
+/// InputError of validateSamplesInto for the first in segments from..to-1.
 double openSampleSize(PointsRef q, int minPoints, const char* method);
-void extendParameters(const double* chords, Eigen::Index from, Eigen::Index to, Parametrization kind, double size,
-                      double* t);
+[[noreturn]] void throwFirstCoincident(PointsRef q, Eigen::Index from, Eigen::Index to, double size);
 
 }  // namespace detail
 
