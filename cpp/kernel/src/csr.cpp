@@ -193,10 +193,7 @@ struct WindowArrays {
   double* dv[3];     // f_k'(t_k)
   double* h;         // h_k = t_{k+1} - t_k
   double* kappa;     // |curvature| of f_k at t_k
-  double* mu;        // mu_k of eq. (6): weight of kappa_k against kappa_{k-1}
-  double* aL;        // weight of p_k^L times h_{k-1}^2 / 3
-  double* aR;        // weight of p_k^R times h_k^2 / 3
-  static constexpr int kArrays = 14;
+  static constexpr int kArrays = 11;
 };
 
 class Workspace {
@@ -212,9 +209,6 @@ class Workspace {
     for (int c = 0; c < 3; ++c) a.dv[c] = p + (6 + c) * stride;
     a.h = p + 9 * stride;
     a.kappa = p + 10 * stride;
-    a.mu = p + 11 * stride;
-    a.aL = p + 12 * stride;
-    a.aR = p + 13 * stride;
     return a;
   }
 
@@ -362,38 +356,19 @@ inline __attribute__((always_inline)) void quadratics(
   }
 }
 
-/// The weights of eq. (6) for the points with two neighbours: mu_k = kappa_k / (kappa_k +
-/// kappa_{k-1}) once per pair (mu_{k+1} is the next point's mu_k), nu_k = kappa_{k-1} /
-/// (kappa_{k-1} + kappa_{k+1}); aL, aR fold in the h^2 / 3 of the blossom differences.
-template <EpsilonRule rule>
-inline __attribute__((always_inline)) void weights(const WindowArrays& a, Eigen::Index W, double epsilon) {
-  const double* __restrict kappa = a.kappa;
-  const double* __restrict h = a.h;
-  double* __restrict mu = a.mu;
-  double* __restrict aL = a.aL;
-  double* __restrict aR = a.aR;
-  const double third = 1.0 / 3.0;
-  for (Eigen::Index k = 1; k < W; ++k) mu[k] = weightOf<rule>(kappa[k], kappa[k - 1], epsilon);
-  for (Eigen::Index k = 1; k + 1 < W; ++k) {
-    const double hm = h[k - 1], h0 = h[k];
-    const double nu = weightOf<rule>(kappa[k - 1], kappa[k + 1], epsilon);
-    aL[k] = (1.0 - nu) * mu[k] * hm * hm * third;
-    aR[k] = nu * (1.0 - mu[k + 1]) * h0 * h0 * third;
-  }
-}
-
 /// Pass C: eq. (6) for the poles of points kFrom..kTo of the window, written as rows
 /// kFrom + rowShift... of `out`. p_k = F_k[t_{k-1}, t_k, t_{k+1}] is the cubic blossom of
 /// f_k; f_{k-1} - f_k vanishes at t_{k-1} and t_k, so it is (D2_{k-1} - D2_k)(t - t_{k-1})
 /// (t - t_k), whose blossom at (t_{k-1}, t_k, t_{k+1}) is -(D2_{k-1} - D2_k) h_{k-1}^2 / 3:
 /// p_k^L = p_k - (D2_{k-1} - D2_k) h_{k-1}^2 / 3, likewise p_k^R with D2_{k+1} and h_k, and
-/// c_k = p_k - (1 - nu_k) mu_k (p_k - p_k^L) - nu_k (1 - mu_{k+1}) (p_k - p_k^R).
-template <int D, bool quasiOnly>
+/// c_k = p_k - (1 - nu_k) mu_k (p_k - p_k^L) - nu_k (1 - mu_{k+1}) (p_k - p_k^R), where
+/// mu_k = kappa_k / (kappa_k + kappa_{k-1}) and nu_k = kappa_{k-1} / (kappa_{k-1} +
+/// kappa_{k+1}), with the epsilon rule (weightOf).
+template <int D, EpsilonRule rule, bool quasiOnly>
 inline __attribute__((always_inline)) void poles(const double* __restrict x, const WindowArrays& a, Eigen::Index kFrom,
-                                                   Eigen::Index kTo, double* __restrict out) {
+                                                   Eigen::Index kTo, double epsilon, double* __restrict out) {
+  const double* __restrict kappa = a.kappa;
   const double* __restrict h = a.h;
-  const double* __restrict aL = a.aL;
-  const double* __restrict aR = a.aR;
   const double* __restrict D2x = a.D2[0];
   const double* __restrict D2y = a.D2[1];
   const double* __restrict D2z = a.D2[2];
@@ -410,18 +385,25 @@ inline __attribute__((always_inline)) void poles(const double* __restrict x, con
       o[1] = x[D * k + 1] + dvy[k] * ap + D2y[k] * bp;
       if constexpr (D == 3) o[2] = x[D * k + 2] + dvz[k] * ap + D2z[k] * bp;
     } else {
-      o[0] = x[D * k] + dvx[k] * ap + D2x[k] * bp - aL[k] * (D2x[k - 1] - D2x[k]) - aR[k] * (D2x[k + 1] - D2x[k]);
-      o[1] = x[D * k + 1] + dvy[k] * ap + D2y[k] * bp - aL[k] * (D2y[k - 1] - D2y[k]) - aR[k] * (D2y[k + 1] - D2y[k]);
+      // The weights: mu_k, mu_{k+1} (each pair's is formed twice, by both of its points:
+      // cheaper than a pass of its own) and nu_k, times the h^2 / 3 of the differences.
+      const double mu0 = weightOf<rule>(kappa[k], kappa[k - 1], epsilon);
+      const double mu1 = weightOf<rule>(kappa[k + 1], kappa[k], epsilon);
+      const double nu = weightOf<rule>(kappa[k - 1], kappa[k + 1], epsilon);
+      const double aL = (1.0 - nu) * mu0 * hm * hm * third, aR = nu * (1.0 - mu1) * h0 * h0 * third;
+      o[0] = x[D * k] + dvx[k] * ap + D2x[k] * bp - aL * (D2x[k - 1] - D2x[k]) - aR * (D2x[k + 1] - D2x[k]);
+      o[1] = x[D * k + 1] + dvy[k] * ap + D2y[k] * bp - aL * (D2y[k - 1] - D2y[k]) - aR * (D2y[k + 1] - D2y[k]);
       if constexpr (D == 3) {
-        o[2] = x[D * k + 2] + dvz[k] * ap + D2z[k] * bp - aL[k] * (D2z[k - 1] - D2z[k]) - aR[k] * (D2z[k + 1] - D2z[k]);
+        o[2] = x[D * k + 2] + dvz[k] * ap + D2z[k] * bp - aL * (D2z[k - 1] - D2z[k]) - aR * (D2z[k + 1] - D2z[k]);
       }
     }
   }
 }
 
 /// One window of W >= 3 contiguous points x (W x D) with h_k = t_{k+1} - t_k in a.h and
-/// the differences of pass 0 in a.dd, solved as open data: its poles are rows 0..W+1 (row k + 1 for point k; rows 0, 1, W,
-/// W + 1 are the clamped ends). Writes rows rowFrom..rowTo to out + D * (row + rowShift).
+/// the differences of pass 0 in a.dd, solved as open data: its poles are rows 0..W+1 (row
+/// k + 1 for point k; rows 0, 1, W, W + 1 are the clamped ends). Writes rows
+/// rowFrom..rowTo to out + D * (row + rowShift).
 template <int D, EpsilonRule rule, bool quasiOnly>
 inline __attribute__((always_inline)) void windowPolesImpl(const double* x, const WindowArrays& a, Eigen::Index W,
                                                              double epsilon, double* out, Eigen::Index rowShift,
@@ -448,14 +430,13 @@ inline __attribute__((always_inline)) void windowPolesImpl(const double* x, cons
   if constexpr (!quasiOnly) {
     a.kappa[0] = first.kappaAt(-a.h[0]);
     a.kappa[W - 1] = last.kappaAt(a.h[W - 2]);
-    weights<rule>(a, W, epsilon);
   }
   auto row = [&](Eigen::Index r) { return Eigen::Map<Vec<D>>(out + D * (r + rowShift)); };
   // Clamped start: F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1.
   if (rowFrom <= 0) row(0) = Eigen::Map<const Vec<D>>(x);
   if (rowFrom <= 1 && rowTo >= 1) row(1) = first.blossom3(-a.h[0], -a.h[0], 0.0);
   const Eigen::Index kFrom = std::max<Eigen::Index>(rowFrom - 1, 1), kTo = std::min<Eigen::Index>(rowTo - 1, W - 2);
-  if (kFrom <= kTo) poles<D, quasiOnly>(x, a, kFrom, kTo, out + D * (kFrom + 1 + rowShift));
+  if (kFrom <= kTo) poles<D, rule, quasiOnly>(x, a, kFrom, kTo, epsilon, out + D * (kFrom + 1 + rowShift));
   // Clamped end: F[t_{W-2},t_{W-1},t_{W-1}] of f_{W-2} and q_{W-1}.
   if (rowFrom <= W && rowTo >= W) row(W) = last.blossom3(0.0, a.h[W - 2], a.h[W - 2]);
   if (rowTo >= W + 1) row(W + 1) = Eigen::Map<const Vec<D>>(x + D * (W - 1));

@@ -12,7 +12,7 @@ namespace fairsplines::detail {
 enum class CsrStrategy { Streaming, Vectorised };
 
 /// From this many samples fitCubic picks the vectorised strategy; its window length.
-constexpr Eigen::Index kVectorisedFrom = 128, kWindow = 2048;
+constexpr Eigen::Index kVectorisedFrom = 128, kWindow = 256;
 
 /// The strategy fitCubic picks for n samples.
 CsrStrategy defaultStrategy(Eigen::Index n);
