@@ -285,6 +285,30 @@ TEST(Csr, StreamingPassChecksEveryPoint) {
   }
 }
 
+TEST(Csr, DataFoldingBackIsTheLimitOfDataNearlyFoldingBack) {
+  // q_{k+1} = q_{k-1}: the quadratic interpolant turns back at q_k, its curvature there is
+  // 0/0. The fit must be finite and the limit of data that nearly fold back, with both
+  // epsilon rules and both strategies (short data streams, long data is vectorised).
+  for (int n : {9, 300}) {
+    for (EpsilonRule rule : {EpsilonRule::CaseDistinction, EpsilonRule::Additive}) {
+      PointMatrix q(n, 2);
+      for (int i = 0; i < n; ++i) q.row(i) << i, 0.3 * std::sin(0.5 * i);
+      const int k = n / 2;
+      q.row(k + 1) = q.row(k - 1);  // a hairpin at q_k
+      CsrOptions options;
+      options.rule = rule;
+      const BSplineCurve exact = csrSpline(q, options);
+      ASSERT_TRUE(exact.poles.allFinite()) << n << " " << static_cast<int>(rule);
+      for (double delta : {1e-7, -1e-7}) {
+        PointMatrix near = q;
+        near(k + 1, 1) += delta;
+        const BSplineCurve nearly = csrSpline(near, options);
+        EXPECT_LT((exact.poles - nearly.poles).cwiseAbs().maxCoeff(), 1e-5) << n << " " << delta;
+      }
+    }
+  }
+}
+
 TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

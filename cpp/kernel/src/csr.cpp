@@ -20,7 +20,18 @@ namespace {
 template <int D>
 using Vec = Eigen::Matrix<double, D, 1>;
 
-/// |d1 x d2| / |d1|^3, with a single square root.
+/// The curvature given to a quadratic interpolant whose data fold back on themselves
+/// (q_{i+1} = q_{i-1}: f_i' vanishes at t_i, and |f' x f''| / |f'|^3 is 0/0). Near such
+/// data the curvature grows without bound, so the weights of eq. (6) go to their limits
+/// (mu -> 1 against a finite neighbour); a large finite curvature gives those limits,
+/// with both epsilon rules, and keeps every sum of two finite.
+constexpr double kHairpinCurvature = 1e300;
+
+/// A curvature, with NaN (data folding back) and anything beyond kHairpinCurvature as
+/// kHairpinCurvature. A comparison, so that the loops vectorise it as a blend.
+inline double boundedCurvature(double kappa) { return kappa <= kHairpinCurvature ? kappa : kHairpinCurvature; }
+
+/// |d1 x d2| / |d1|^3, with a single square root (bounded).
 template <int D>
 inline double curvatureOf(const Vec<D>& d1, const Vec<D>& d2) {
   double cross2;
@@ -31,7 +42,7 @@ inline double curvatureOf(const Vec<D>& d1, const Vec<D>& d2) {
     cross2 = d1.cross(d2).squaredNorm();
   }
   const double speed2 = d1.squaredNorm();
-  return std::sqrt(cross2 / (speed2 * speed2 * speed2));
+  return boundedCurvature(std::sqrt(cross2 / (speed2 * speed2 * speed2)));
 }
 
 /// The quadratic interpolant f_i of q_{i-1}, q_i, q_{i+1} at t_{i-1}, t_i, t_{i+1},
@@ -317,7 +328,7 @@ inline __attribute__((always_inline)) void dividedDifferences(const double* __re
 /// Pass B, for the points with two neighbours: the quadratic interpolant f_k of q_{k-1},
 /// q_k, q_{k+1} about t_k in Newton form, D2 = f_k''/2 and f_k'(t_k) (one reciprocal for
 /// all coordinates), and, with `curvature`, |f_k' x f_k''| / |f_k'|^3 at t_k with a single
-/// square root.
+/// square root, bounded by boundedCurvature.
 template <int D, bool curvature>
 inline __attribute__((always_inline)) void quadratics(
     Eigen::Index W, const double* __restrict h, const double* __restrict ddx, const double* __restrict ddy,
@@ -351,7 +362,7 @@ inline __attribute__((always_inline)) void quadratics(
         cross2 = x * x + y * y + z * z;
         speed2 = d1x * d1x + d1y * d1y + d1z * d1z;
       }
-      kappa[k] = std::sqrt(cross2 / (speed2 * speed2 * speed2));
+      kappa[k] = boundedCurvature(std::sqrt(cross2 / (speed2 * speed2 * speed2)));
     }
   }
 }
