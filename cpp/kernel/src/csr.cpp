@@ -247,9 +247,9 @@ inline __attribute__((always_inline)) void differences(const double* __restrict 
 /// Writes the differences to a.dd and h_k = t_{k+1} - t_k to a.h. Returns whether a new
 /// chord is at most `tol` (coincident points: the caller names them).
 ///
-/// The chords are computed eight at a time before their eight additions, so that the
-/// processor overlaps the square roots of one strip with the chain of additions of the
-/// one before (as two passes, each would wait for the other's unit).
+/// Eight chords at a time, then their eight additions: the square roots vectorise, the
+/// additions stay in order, and the processor can overlap one strip's square roots with
+/// the previous strip's additions.
 template <int D, Parametrization kind>
 inline __attribute__((always_inline)) bool differencesAndParameters(const double* __restrict x, Eigen::Index W,
                                                                       Eigen::Index k0, const WindowArrays& a,
@@ -662,7 +662,7 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
   // cache. The checks, their order and every value are those of the path above.
   const double size = openSampleSize(q, 3, "the csr-spline");
   const WindowFunction solve = windowFunction(static_cast<int>(dim), options.rule, false);
-  const ParametersFunction subtract = parametersFunction(static_cast<int>(dim), options.parametrization);
+  const ParametersFunction prepare = parametersFunction(static_cast<int>(dim), options.parametrization);
   const Eigen::Index W = std::min(n, kWindow);
   const WindowArrays a = threadWorkspace().arrays(W);
   const double tol = 1e-12 * size;  // coincidence, as validateSamples judges it
@@ -672,7 +672,7 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
     s = std::min(s, n - W);
     const double* x = q.data() + dim * s;
     // The segments known..s+W-2 are new.
-    if (subtract(x, W, known - s, a, t + s, tol)) throwFirstCoincident(q, known, s + W - 1, size);
+    if (prepare(x, W, known - s, a, t + s, tol)) throwFirstCoincident(q, known, s + W - 1, size);
     known = s + W - 1;
     const bool atStart = s == 0, atEnd = s + W == n;
     solve(x, a, W, options.epsilon / size, poles, s, atStart ? 0 : 3, atEnd ? W + 1 : W - 2);

@@ -87,7 +87,7 @@ FAIRSPLINES_VECTORISE bool finiteBox(const double* __restrict data, Eigen::Index
   for (int c = 0; c < D; ++c) lo[c] = hi[c] = data[c];
   double sum = 0.0;
   Eigen::Index i = 0;
-#if defined(__GNUC__)
+#if defined(__GNUC__) && !defined(__clang__)
   // GCC's vector extension: four doubles, D vectors per block of four points.
   typedef double V __attribute__((vector_size(32)));
   V l[D], h[D], bad[D];
@@ -226,8 +226,8 @@ void throwFirstCoincident(PointsRef q, Eigen::Index from, Eigen::Index to, doubl
   throw InputError("two consecutive points coincide");
 }
 
-void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first) {
-  if (first) t[0] = 0.0;
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t) {
+  t[0] = 0.0;
   // Reads chord i before writing t[i + 1]: chords may be t + 1.
   for (Eigen::Index i = 0; i < count; ++i) {
     double h = 1.0;

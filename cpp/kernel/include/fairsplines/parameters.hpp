@@ -39,8 +39,7 @@ namespace detail {
 double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
 
 /// parameters() into t (count + 1 values); chords may be t + 1 (computed in place).
-/// With first = false, t[0] is taken as given (a continuation).
-void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t, bool first = true);
+void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t);
 
 /// The checks of validateSamplesInto for open data in two parts, so that a pass can
 /// stream: openSampleSize makes every check but the coincidence of consecutive points
