@@ -33,6 +33,16 @@ double c2Jump(const Handle(Geom_BSplineCurve)& c) {
   return worst / scale;
 }
 
+/// The message of the InputError csrSpline(q) throws, or "no error".
+std::string message(const PointMatrix& q) {
+  try {
+    csrSpline(q);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 }  // namespace
 
 TEST(Csr, StraightLine_IsReproduced) {
@@ -140,14 +150,6 @@ TEST(Csr, EpsilonRulesBothKeepALineStraight) {
 }
 
 TEST(Csr, BadInputThrowsNamedInputError) {
-  auto message = [](const PointMatrix& q) {
-    try {
-      csrSpline(q);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   PointMatrix two(2, 2);
   two << 0, 0, 1, 1;
   EXPECT_NE(message(two).find("at least 3"), std::string::npos);
@@ -241,14 +243,6 @@ TEST(Csr, StreamingPassChecksEveryPoint) {
   // coincidence tolerance) is that of every point.
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  auto message = [](const PointMatrix& q) {
-    try {
-      csrSpline(q);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   for (int n : {203, 204, 205, 206}) {
     for (int dim : {2, 3}) {
       PointMatrix q(n, dim);
