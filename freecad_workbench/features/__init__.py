@@ -5,7 +5,7 @@ from .basic_curve import BasicCurveFeature, make_basic_curve
 from .blend_shape import BlendShape, make_blend_shape
 from .csr_fit import CsrFit, make_csr_fit
 from .design_spline import DesignSpline, make_design_spline
-from .edit_polygon import EditPolygon, make_edit_polygon
+from .edit_polygon import EditPolygon, make_edit_polygon, set_pole
 from .monotone_blend import MonotoneBlend, make_monotone_blend
 from .monotone_design import MonotoneDesign, make_monotone_design
 from .profile_test import ProfileTest, make_profile_test
@@ -27,4 +27,5 @@ __all__ = [
     "make_monotone_blend",
     "make_monotone_design",
     "make_profile_test",
+    "set_pole",
 ]
