@@ -33,8 +33,25 @@ def test_control_point_spline_uses_the_data_as_poles():
     c = fw.control_point_spline(q)
     assert np.array_equal(poles(c)[:, :2], q)
     assert c.Continuity == "C2"
-    closed = fw.control_point_spline(q[:-5], closed=True)
-    assert closed.isPeriodic()
+
+
+def test_closed_control_point_spline_uses_the_data_as_its_periodic_poles():
+    q = fig2_samples()[:-5]
+    c = fw.control_point_spline(q, closed=True)
+    assert c.isPeriodic() and c.isClosed() and c.Continuity == "C2"
+    p = poles(c)
+    assert len(p) == len(q)
+    assert not p[:, 2].any()
+    # OCCT stores a periodic curve's poles in a cyclic order of its own: find the rotation.
+    start = [i for i in range(len(q)) if np.array_equal(p[0, :2], q[i])]
+    assert len(start) == 1
+    assert np.array_equal(p[:, :2], np.roll(q, -start[0], axis=0))
+    # Uniform knots: the curve at its knots is (q_(i-1) + 4 q_i + q_(i+1)) / 6, cyclically.
+    expected = (np.roll(q, 1, axis=0) + 4 * q + np.roll(q, -1, axis=0)) / 6
+    on_curve = np.array([tuple(c.value(k))[:2] for k in c.getKnots()[:-1]])
+    assert len(on_curve) == len(q)
+    for v in expected:
+        assert np.linalg.norm(on_curve - v, axis=1).min() < 1e-12
 
 
 def test_quadratic_design_interpolates_sparse_points_with_quadratic_pieces():
@@ -61,10 +78,24 @@ def test_quadratic_design_handles_weigh_by_the_other_sides_curvature():
     assert p[3, :2] == pytest.approx((1.5, 0.0), abs=1e-14)
 
 
-def test_quadratic_design_closed_returns_to_start():
+def test_quadratic_design_closed_interpolates_every_point_and_closes():
     a = np.linspace(0, 2 * math.pi, 7, endpoint=False)
-    c = fw.quadratic_design(np.c_[np.cos(a), np.sin(a)], closed=True)
+    q = np.c_[np.cos(a), 0.6 * np.sin(a)]
+    c = fw.quadratic_design(q, closed=True)
+    assert c.Degree == 2 and c.isClosed()
     assert (c.value(c.FirstParameter) - c.value(c.LastParameter)).Length == 0.0
+    knots = c.getKnots()
+    assert len(knots) == len(q) + 1  # a knot per data point, and the seam back to q_0
+    # C0 or better at the data points: interior multiplicity at most the degree, and both
+    # sides of each knot meet at the data point (checked below).
+    assert max(c.getMultiplicities()[1:-1]) <= c.Degree
+    for k, expected in zip(knots, np.r_[q, q[:1]]):
+        v = c.value(k)
+        assert (v.x, v.y, v.z) == pytest.approx((expected[0], expected[1], 0.0), abs=1e-14)
+        delta = 1e-9 * (knots[-1] - knots[0])
+        for u in (k - delta, k + delta):
+            if knots[0] <= u <= knots[-1]:
+                assert (c.value(u) - v).Length < 1e-8
 
 
 @pytest.mark.parametrize(
@@ -75,3 +106,21 @@ def test_baselines_reject_too_few_points(function, minimum):
     q = [(float(i), float(i % 2)) for i in range(minimum - 1)]
     with pytest.raises(fw.InputError, match=f"at least {minimum}"):
         function(q)
+
+
+BASELINES = [fw.interpolate_classic, fw.quadratic_design, fw.quasi_interpolant, fw.control_point_spline]
+BAD_POINTS = [
+    ([(0, 0), (1, float("nan")), (2, 0), (3, 1), (4, 0)], r"point 1 is not finite \(NaN or infinity\)"),
+    ([(0, 0), (1, float("inf")), (2, 0), (3, 1), (4, 0)], r"point 1 is not finite \(NaN or infinity\)"),
+    ([(0, 0, 0), (1, 1, 0), (2, 0, 0), (3, 1, -float("inf")), (4, 0, 0)], r"point 3 is not finite \(NaN or infinity\)"),
+    ([(0, 0), (1, 1), (1, 1), (3, 1), (4, 0)], "points 1 and 2 coincide"),
+    ([(0, 0, 0), (1, 1, 1), (2, 0, 0), (2, 0, 0), (4, 0, 1)], "points 2 and 3 coincide"),
+]
+
+
+@pytest.mark.parametrize("closed", [False, True])
+@pytest.mark.parametrize("points, message", BAD_POINTS, ids=["nan", "inf", "minus-inf-3d", "coincident", "coincident-3d"])
+@pytest.mark.parametrize("function", BASELINES, ids=lambda f: f.__name__)
+def test_baselines_reject_non_finite_and_coincident_points(function, points, message, closed):
+    with pytest.raises(fw.InputError, match=message):
+        function(points, closed=closed)

@@ -150,6 +150,32 @@ def test_parameter_changes_recompute(doc):
     assert fit.Shape.Edges[0].Curve.isPeriodic()
 
 
+def line_and_arc(doc, radius=2e4, length=30.0):
+    """A wire of a straight edge ending at the origin and a gently bent arc tangent to it
+    there (curvature * size = 60 / radius = 3e-3, between the Epsilon values used)."""
+    line = Part.LineSegment(FreeCAD.Vector(-length, 0, 0), FreeCAD.Vector(0, 0, 0))
+    circle = Part.Circle(FreeCAD.Vector(0, radius, 0), FreeCAD.Vector(0, 0, 1), radius)
+    arc = Part.ArcOfCircle(circle, -math.pi / 2, -math.pi / 2 + length / radius)
+    wire = doc.addObject("Part::Feature", "LineArc")
+    wire.Shape = Part.Wire([line.toShape(), arc.toShape()])
+    doc.recompute()
+    return wire
+
+
+def test_epsilon_change_recomputes_with_the_new_tolerance(doc):
+    wire = line_and_arc(doc)
+    fit = make_csr_fit(doc, [(wire, ("Edge1", "Edge2"))], samples=31)
+    before = poles(fit)
+    fit.Epsilon = 1e-2
+    doc.recompute()
+    assert fit.Status == "ok"
+    # Measured: the poles near the join move by 4.2e-6 (the case rule takes mu = nu = 1/2
+    # where line meets arc once epsilon/size exceeds the arc's curvature).
+    assert np.abs(poles(fit) - before).max() > 4e-7
+    points, _ = collect_points(fit.Sources, fit.Samples)
+    np.testing.assert_array_equal(poles(fit), poles(fw.csr_spline(points, epsilon=1e-2)))
+
+
 def test_save_close_reopen_recompute_gives_identical_poles(doc, tmp_path):
     fit = make_csr_fit(doc, vertices(doc), parametrization="centripetal", epsilon=1e-6)
     before = poles(fit)
@@ -198,13 +224,57 @@ def test_undo_removes_the_created_feature_and_redo_restores_it(doc):
     doc.openTransaction("vertices")
     doc.commitTransaction()
     count = len(doc.Objects)
-    make_csr_fit(doc, objs)
+    created = poles(make_csr_fit(doc, objs))
     assert len(doc.Objects) == count + 1
     assert doc.UndoNames[0] == "Create csr fit"
     doc.undo()
     assert len(doc.Objects) == count and doc.getObject("CsrFit") is None
     doc.redo()
     assert doc.getObject("CsrFit") is not None
+    doc.recompute()
+    fit = doc.getObject("CsrFit")
+    assert fit.Status == "ok" and fit.Shape.isValid() and len(fit.Shape.Edges) == 1
+    np.testing.assert_array_equal(poles(fit), created)
+
+
+def test_undo_of_a_moved_source_point_restores_the_fit(doc):
+    doc.UndoMode = 1
+    objs = vertices(doc)
+    doc.openTransaction("vertices")
+    doc.commitTransaction()
+    fit = make_csr_fit(doc, objs)
+    before = poles(fit)
+    doc.openTransaction("move")
+    objs[2].Y = 20
+    doc.commitTransaction()
+    doc.recompute()  # outside the step: undo does not restore the shape, recompute must
+    moved = poles(fit)
+    assert not np.allclose(moved, before)
+    doc.undo()
+    doc.recompute()
+    assert objs[2].Y == DATA[2][1] and fit.Status == "ok"
+    np.testing.assert_array_equal(poles(fit), before)
+    doc.redo()
+    doc.recompute()
+    np.testing.assert_array_equal(poles(fit), moved)
+
+
+def test_undo_of_a_sources_change_restores_the_fit(doc):
+    doc.UndoMode = 1
+    objs = vertices(doc)
+    doc.openTransaction("vertices")
+    doc.commitTransaction()
+    fit = make_csr_fit(doc, objs)
+    before = poles(fit)
+    doc.openTransaction("sources")
+    fit.Sources = [(o, "") for o in objs[:4]]
+    doc.commitTransaction()
+    doc.recompute()
+    np.testing.assert_array_equal(poles(fit), poles(fw.csr_spline(DATA[:4])))
+    doc.undo()
+    doc.recompute()
+    assert [link[0] for link in fit.Sources] == objs and fit.Status == "ok"
+    np.testing.assert_array_equal(poles(fit), before)
 
 
 def _too_few(fit, objs):
@@ -224,11 +294,17 @@ def _nan(fit, objs):
     objs[3].X = float("nan")
 
 
+def _infinity(fit, objs):
+    # FreeCAD's vertex shape turns this into (nan, inf, nan) (inf * 0 in its placement).
+    objs[3].Y = float("inf")
+
+
 BAD_INPUT = {
     "too few points": (_too_few, "the csr-spline needs at least 3 points, got 2"),
     "coincident consecutive points": (_coincident_consecutive, "points 2 and 3 coincide"),
     "all points coincide": (_all_coincide, "all points coincide"),
     "nan": (_nan, "point 3 is not finite (NaN or infinity)"),
+    "infinity": (_infinity, "point 3 is not finite (NaN or infinity)"),
 }
 
 

@@ -77,6 +77,11 @@ Quadratic<D> interpolant(const Vec<D>& qm, const Vec<D>& q0, const Vec<D>& qp, d
   return f;
 }
 
+/// Eq. (6)'s epsilon: positive and finite (infinity would make every weight NaN under the
+/// additive rule).
+inline bool validEpsilon(double epsilon) { return epsilon > 0.0 && epsilon < HUGE_VAL; }
+constexpr const char* kEpsilonMessage = "epsilon must be positive and finite";
+
 /// mu, nu of eq. (6): a / (a + b), with the epsilon rule.
 struct Weight {
   double epsilon;  // already divided by the data size: units of curvature
@@ -641,7 +646,7 @@ PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed,
 
 void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles) {
   const Eigen::Index n = q.rows(), dim = q.cols();
-  const bool fused = !options.closed && options.parameters.size() == 0 && options.epsilon > 0.0 &&
+  const bool fused = !options.closed && options.parameters.size() == 0 && validEpsilon(options.epsilon) &&
                      (dim == 2 || dim == 3) && q.outerStride() == dim && n >= kVectorisedFrom;
   if (!fused) {
     const Eigen::Index segments = options.closed ? n : n - 1;
@@ -653,7 +658,7 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
     } else {
       parametersInto(t + 1, segments, options.parametrization, t);
     }
-    if (!(options.epsilon > 0.0)) throw InputError("epsilon must be positive");
+    if (!validEpsilon(options.epsilon)) throw InputError(kEpsilonMessage);
     cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
     return;
   }
@@ -698,7 +703,7 @@ BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
 
 BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {
   const SampleInfo info = validateSamples(q, closed, 3, "the quadratic design");
-  if (!(epsilon > 0.0)) throw InputError("epsilon must be positive");
+  if (!detail::validEpsilon(epsilon)) throw InputError(detail::kEpsilonMessage);
   const Eigen::VectorXd t = parameters(info.chords, parametrization);
   const detail::Weight weight{epsilon / info.size, EpsilonRule::CaseDistinction};
   const PointMatrix m = q.cols() == 2 ? detail::quadraticHandles<2>(q, t, closed, weight)
