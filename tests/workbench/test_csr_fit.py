@@ -218,11 +218,17 @@ def test_old_document_without_new_properties_loads_and_migrates(doc, tmp_path):
         FreeCAD.closeDocument(reopened.Name)
 
 
-def test_undo_removes_the_created_feature_and_redo_restores_it(doc):
+def undoable_vertices(doc):
+    """The source vertices in a document with undo on, their creation one committed step."""
     doc.UndoMode = 1
     objs = vertices(doc)
     doc.openTransaction("vertices")
     doc.commitTransaction()
+    return objs
+
+
+def test_undo_removes_the_created_feature_and_redo_restores_it(doc):
+    objs = undoable_vertices(doc)
     count = len(doc.Objects)
     created = poles(make_csr_fit(doc, objs))
     assert len(doc.Objects) == count + 1
@@ -238,10 +244,7 @@ def test_undo_removes_the_created_feature_and_redo_restores_it(doc):
 
 
 def test_undo_of_a_moved_source_point_restores_the_fit(doc):
-    doc.UndoMode = 1
-    objs = vertices(doc)
-    doc.openTransaction("vertices")
-    doc.commitTransaction()
+    objs = undoable_vertices(doc)
     fit = make_csr_fit(doc, objs)
     before = poles(fit)
     doc.openTransaction("move")
@@ -260,10 +263,7 @@ def test_undo_of_a_moved_source_point_restores_the_fit(doc):
 
 
 def test_undo_of_a_sources_change_restores_the_fit(doc):
-    doc.UndoMode = 1
-    objs = vertices(doc)
-    doc.openTransaction("vertices")
-    doc.commitTransaction()
+    objs = undoable_vertices(doc)
     fit = make_csr_fit(doc, objs)
     before = poles(fit)
     doc.openTransaction("sources")
