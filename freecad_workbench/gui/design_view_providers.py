@@ -5,6 +5,7 @@ Profile test."""
 import FreeCAD
 import FreeCADGui
 
+from ..features.base import StatelessProxy
 from . import icon_path
 
 translate = FreeCAD.Qt.translate
@@ -17,7 +18,7 @@ def _local_shape(obj):
     return shape
 
 
-class _ViewProvider:
+class _ViewProvider(StatelessProxy):
     """Common part: icon, error icon, edit panel, nothing stored in the file."""
 
     ICON = "FairSplines"
@@ -76,18 +77,6 @@ class _ViewProvider:
     def setupContextMenu(self, vobj, menu):
         action = menu.addAction(translate("FairSplines", "Edit {}").format(vobj.Object.Label))
         action.triggered.connect(lambda: FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 0))
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    def dumps(self):
-        return None
-
-    def loads(self, state):
-        return None
 
 
 class ViewProviderBasicCurve(_ViewProvider):
