@@ -87,6 +87,8 @@ def gui():
                 sys.path.append(path)
     import FreeCADGui
 
+    # FreeCAD 1.1 animates view changes: a picture taken right after viewTop() is empty.
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetBool("UseNavigationAnimations", False)
     FreeCADGui.showMainWindow()
     # The workbench under test is this checkout's: the user Mod folder may link another one
     # (make install), whose InitGui.py FreeCAD has just run. Run ours the way FreeCAD does.
@@ -99,4 +101,17 @@ def gui():
     yield FreeCADGui
     for name in list(FreeCAD.listDocuments()):
         FreeCAD.closeDocument(name)
+    _close_plot_windows()
     FreeCADGui.updateGui()
+
+
+def _close_plot_windows():
+    """Close matplotlib's Qt windows while Qt can still delete them: left for interpreter
+    exit, Shiboken tears them down after Python (a crash at exit on PySide6)."""
+    if "matplotlib.pyplot" in sys.modules:
+        sys.modules["matplotlib.pyplot"].close("all")
+    from freecad_workbench.gui.qt import QtCore, QtWidgets
+
+    QtCore.QCoreApplication.sendPostedEvents(None, QtCore.QEvent.DeferredDelete)
+    for _ in range(3):
+        QtWidgets.QApplication.processEvents()

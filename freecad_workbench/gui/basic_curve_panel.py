@@ -51,7 +51,7 @@ class BasicCurvePanel(LiveEditPanel):
     """Task panel editing a BasicCurve object live."""
 
     def __init__(self, obj):
-        from PySide2 import QtGui, QtWidgets
+        from .qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -97,7 +97,7 @@ class BasicCurvePanel(LiveEditPanel):
 
     def _build_dimensions(self):
         """Rows for the dimensions of the current kind."""
-        from PySide2 import QtWidgets
+        from .qt import QtWidgets
 
         while self.dimensions.rowCount():
             self.dimensions.removeRow(0)

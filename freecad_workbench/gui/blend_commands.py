@@ -167,7 +167,7 @@ class BlendShapePanel(LiveEditPanel):
     change recomputes at once; OK keeps the changes as one undo step, Cancel restores."""
 
     def __init__(self, obj):
-        from PySide2 import QtGui, QtWidgets
+        from .qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -259,7 +259,7 @@ class BlendShapePanel(LiveEditPanel):
 
     def _build_dimensions(self):
         """Rows for the lengths of the kind, then the counts and range (uniform) or the lists."""
-        from PySide2 import QtWidgets
+        from .qt import QtWidgets
 
         while self.dimensions.rowCount():
             self.dimensions.removeRow(0)

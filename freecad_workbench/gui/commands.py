@@ -138,7 +138,7 @@ class CombTaskPanel:
     Cancel restores the values the panel opened with."""
 
     def __init__(self):
-        from PySide2 import QtGui, QtWidgets
+        from .qt import QtGui, QtWidgets
 
         global _panel
         _panel = self

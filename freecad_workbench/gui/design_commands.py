@@ -71,7 +71,7 @@ def _edit(obj):
 def _edit_later(obj):
     """Open obj's task panel once the command has returned: FreeCAD closes the command's
     own undo step then, so the panel's changes become an undo step of their own."""
-    from PySide2 import QtCore
+    from .qt import QtCore
 
     doc_name, name = obj.Document.Name, obj.Name
 

@@ -21,7 +21,7 @@ class EditPolygonPanel(LiveEditPanel):
     """Task panel: pick and move the poles of an Edit polygon feature."""
 
     def __init__(self, obj):
-        from PySide2 import QtGui, QtWidgets
+        from .qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document

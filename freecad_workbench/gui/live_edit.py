@@ -80,7 +80,7 @@ class LiveEditPanel:
     def _spin(self, lower, upper, suffix="", decimals=4):
         """A spin box for a dimension: range, decimals, unit suffix; it reports a value
         only when editing ends (no recompute per keystroke)."""
-        from PySide2 import QtWidgets
+        from .qt import QtWidgets
 
         spin = QtWidgets.QDoubleSpinBox()
         spin.setRange(lower, upper)
@@ -90,7 +90,7 @@ class LiveEditPanel:
         return spin
 
     def getStandardButtons(self):
-        from PySide2 import QtWidgets
+        from .qt import QtWidgets
 
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
 

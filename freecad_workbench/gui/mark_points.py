@@ -36,7 +36,7 @@ class MarkPointsPanel(LiveEditPanel):
     """Task panel: sliders for the marks of a Design spline, with live preview."""
 
     def __init__(self, obj):
-        from PySide2 import QtCore, QtGui, QtWidgets
+        from .qt import QtCore, QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -118,7 +118,7 @@ class MarkPointsPanel(LiveEditPanel):
 
     def _build_rows(self, piece):
         """(Re)create the slider rows of a piece from self.marks."""
-        from PySide2 import QtCore, QtWidgets
+        from .qt import QtCore, QtWidgets
 
         grid = self.grids[piece]
         while grid.count():

@@ -235,7 +235,7 @@ class MonotoneDesignTaskPanel:
     DIGITS = 6
 
     def __init__(self, obj):
-        from PySide2 import QtGui, QtWidgets
+        from .qt import QtGui, QtWidgets
 
         global _panel
         _panel = self
@@ -279,7 +279,7 @@ class MonotoneDesignTaskPanel:
 
     # -- table <-> vectors
     def _fill(self, first, diffs, moved):
-        from PySide2 import QtCore, QtWidgets
+        from .qt import QtCore, QtWidgets
 
         self.table.blockSignals(True)
         self.table.setRowCount(1 + len(diffs))
@@ -300,7 +300,7 @@ class MonotoneDesignTaskPanel:
     def vectors(self):
         """(V0, [dV_i]) as shown: exact where a cell was not retyped; a cell that is not a
         number counts as 0."""
-        from PySide2 import QtCore
+        from .qt import QtCore
 
         rows = []
         for r in range(self.table.rowCount()):

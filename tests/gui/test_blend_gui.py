@@ -81,7 +81,9 @@ def new_blend(doc):
 
 
 def test_command_has_a_toolbar_a_submenu_and_its_own_icons():
-    from PySide2 import QtSvg
+    from freecad_workbench.gui.qt import qt_module
+
+    QtSvg = qt_module("QtSvg")
 
     from freecad_workbench.gui import blend_commands, icon_path
 

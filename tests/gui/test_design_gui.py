@@ -194,7 +194,9 @@ DESIGN_COMMAND_NAMES = [
 
 @pytest.mark.parametrize("name", DESIGN_COMMAND_NAMES)
 def test_every_design_command_has_its_own_valid_svg_icon(name):
-    from PySide2 import QtSvg
+    from freecad_workbench.gui.qt import qt_module
+
+    QtSvg = qt_module("QtSvg")
 
     from freecad_workbench.gui.design_commands import command_objects
 

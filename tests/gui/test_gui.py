@@ -102,7 +102,9 @@ def test_workbench_has_icon_toolbar_and_menu():
 @pytest.mark.parametrize("name", COMMANDS)
 def test_every_command_has_its_own_valid_svg_icon(name):
     import FreeCADGui
-    from PySide2 import QtSvg
+    from freecad_workbench.gui.qt import qt_module
+
+    QtSvg = qt_module("QtSvg")
 
     assert name in FreeCADGui.listCommands()
     from freecad_workbench.gui import commands

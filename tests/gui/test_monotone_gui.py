@@ -78,7 +78,9 @@ def pick(doc, obj, sub, point):
 
 def test_commands_have_a_toolbar_a_submenu_and_their_own_icons():
     import FreeCADGui
-    from PySide2 import QtSvg
+    from freecad_workbench.gui.qt import qt_module
+
+    QtSvg = qt_module("QtSvg")
 
     FreeCADGui.activateWorkbench("FairSplinesWorkbench")
     assert FreeCADGui.activeWorkbench().getToolbarItems()["FairSplines monotone"] == list(COMMANDS)

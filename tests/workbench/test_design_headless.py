@@ -9,7 +9,7 @@ import textwrap
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-GUI_MODULES = ("FreeCADGui", "PySide", "PySide2", "pivy", "matplotlib.pyplot")
+GUI_MODULES = ("FreeCADGui", "PySide", "PySide2", "PySide6", "pivy", "matplotlib.pyplot")
 
 SCRIPT = textwrap.dedent(
     """

@@ -44,6 +44,12 @@ def profile_sketch(doc, reverse_line=False):
     return sketch
 
 
+def move_point(sketch, geo_id, pos, point):
+    """Move a sketch vertex: moveGeometry since FreeCAD 1.1, movePoint before."""
+    move = getattr(sketch, "moveGeometry", None) or sketch.movePoint
+    move(geo_id, pos, point)
+
+
 def chain_names(sketch):
     """The sketch's EdgeN names of the chain's pieces, in chain order."""
     names = []
@@ -211,7 +217,7 @@ def test_moving_a_sketch_edge_recomputes_the_design(doc):
     sketch = profile_sketch(doc)
     design = make_profile_design(doc, sketch)
     before = arrays(design)[0]
-    sketch.movePoint(2, 2, V(-5, 18, 0))  # the end of the last line (geometry 2)
+    move_point(sketch, 2, 2, V(-5, 18, 0))  # the end of the last line (geometry 2)
     doc.recompute()
     after = arrays(design)[0]
     assert not np.allclose(before, after)
@@ -282,7 +288,7 @@ def test_save_close_reopen_recompute_gives_identical_poles(doc, tmp_path):
         assert design.Status == "ok"
         for x, y in zip(arrays(design), before):  # as recomputed: identical
             np.testing.assert_array_equal(x, y)
-        reopened.getObject("Profile").movePoint(2, 2, V(-5, 18, 0))  # the links survived
+        move_point(reopened.getObject("Profile"), 2, 2, V(-5, 18, 0))  # the links survived
         reopened.recompute()
         assert not np.allclose(arrays(design)[0], before[0])
     finally:
