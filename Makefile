@@ -4,10 +4,12 @@ BUILD    ?= build
 OUT      ?= out
 MOD_DIR  ?= $(HOME)/.local/share/FreeCAD/Mod
 JOBS     ?= 2
+FREECADCMD ?= freecadcmd
 XVFB     := xvfb-run -a -s "-screen 0 1280x1024x24"
 export QTWEBENGINE_DISABLE_SANDBOX=1
 
-.PHONY: deps build install demo test test-cpp test-python run bench clean
+.PHONY: deps build install demo test test-cpp test-python run bench clean \
+        test-freecad-1.0 test-freecad-1.1 test-matrix
 
 deps:
 	@bash tools/install-deps.sh
@@ -23,7 +25,7 @@ install: build
 
 demo: install
 	mkdir -p $(OUT)/demo
-	FAIRSPLINES_OUT=$(CURDIR)/$(OUT)/demo freecadcmd demo/demo.py
+	FAIRSPLINES_OUT=$(CURDIR)/$(OUT)/demo $(FREECADCMD) demo/demo.py
 	@echo "demo: wrote $(OUT)/demo/"
 
 test-cpp: build
@@ -34,6 +36,17 @@ test-python: install
 	$(XVFB) $(PYTHON) -m pytest -v tests
 
 test: test-cpp test-python
+
+# The FreeCAD 1.x matrix: `make test` on a fresh clone of HEAD inside a Debian chroot
+# (trixie: FreeCAD 1.0, Qt5; sid: FreeCAD 1.1, Qt6), kept in $(FAIRSPLINES_CHROOTS)
+# (default /var/cache/fairsplines/chroots). Needs root. See tools/chroot-test.sh.
+test-freecad-1.0:
+	bash tools/chroot-test.sh trixie test
+
+test-freecad-1.1:
+	bash tools/chroot-test.sh sid test
+
+test-matrix: test test-freecad-1.1 test-freecad-1.0
 
 run: install
 	freecad

@@ -13,7 +13,8 @@ import sys
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-FREECAD_LIB = "/usr/lib/freecad-python3/lib"
+# The folder of FreeCAD.so: Debian's, or another FreeCAD's (README, "Building against another FreeCAD").
+FREECAD_LIB = os.environ.get("FAIRSPLINES_FREECAD_LIB", "/usr/lib/freecad-python3/lib")
 ARTIFACTS = os.path.join(REPO, "out", "test-artifacts")
 GUI_DIR = os.path.join(REPO, "tests", "gui")
 
