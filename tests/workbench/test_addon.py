@@ -1,6 +1,8 @@
 """The add-on files FreeCAD reads at start-up: package.xml, Init.py, InitGui.py, icons."""
 import ast
 import os
+import re
+from xml.etree import ElementTree
 
 import FreeCAD
 
@@ -18,6 +20,17 @@ def test_package_xml_describes_the_workbench_for_this_freecad():
     assert workbench.Classname == "FairSplinesWorkbench"
     assert os.path.realpath(os.path.join(REPO, workbench.Subdirectory)) == os.path.realpath(REPO)
     assert os.path.isfile(os.path.join(REPO, workbench.Subdirectory, workbench.Icon))
+    # 0.20's Metadata does not read pythonmin: the oldest Python tested, Debian 12's
+    assert ElementTree.parse(os.path.join(REPO, "package.xml")).find("{*}pythonmin").text == "3.11"
+    assert sorted(d["package"] for d in meta.Depend) == ["matplotlib", "numpy"]
+
+
+def test_package_xml_lists_the_debian_packages_the_set_up_installs():
+    xml = open(os.path.join(REPO, "package.xml"), encoding="utf-8").read()
+    listed = re.search(r"tools/install-deps.sh installs(.*?)\(the last", xml, re.S).group(1).split()
+    script = open(os.path.join(REPO, "tools", "install-deps.sh"), encoding="utf-8").read()
+    installed = re.search(r"packages=\((.*?)\)", script, re.S).group(1).split()
+    assert listed == installed
 
 
 def _imports(path):
