@@ -270,24 +270,35 @@ SpanPolys spanPolys(const Arc& arc) {
   const Poly crossB2 = sub(mul(bx, b2y), mul(by, b2x));   // B x B''
   const Poly dotB1 = mul(bx, b1x) + mul(by, b1y);         // B . B'
   s.speed2 = mul(bx, bx) + mul(by, by);                   // |B|^2
-  // The scale bounds the two terms by their factors, each factor at least as large as the
-  // span's coordinates X allow (a derivative of degree-d data grows by up to 2d per order),
-  // so rounding of the poles, and N vanishing by cancellation (a line, a circle), stay below it.
+  // The scale bounds N's two terms and their first-order change when every factor moves
+  // by its rounding size: a derivative of degree-d data of coordinates up to X moves by up
+  // to 2d X per order (per relTol), the weights by their size. Rounding of the poles, and N
+  // vanishing by cancellation (a line, a circle), stay below relTol times it. The rounding
+  // sizes enter once per term, not as factors of the magnitudes: a short span far from the
+  // origin has derivatives much smaller than X, and a product of such sizes would swamp N.
   const double X = std::max(arc.x.cwiseAbs().maxCoeff(), arc.y.cwiseAbs().maxCoeff());
   const double growth = 2.0 * static_cast<double>(bx.size());
-  const double floorB = growth * X * (arc.rational ? arc.w.cwiseAbs().maxCoeff() : 1.0);
-  const double mB = std::max(bound(bx, by), floorB), mB1 = std::max(bound(b1x, b1y), growth * floorB),
-               mB2 = std::max(bound(b2x, b2y), growth * growth * floorB);
+  const double mW = arc.rational ? arc.w.cwiseAbs().maxCoeff() : 1.0;
+  const double rB = growth * X * mW, rB1 = growth * rB, rB2 = growth * rB1;
+  const double mB = bound(bx, by), mB1 = bound(b1x, b1y), mB2 = bound(b2x, b2y);
   Poly first, second;
   if (arc.rational) {
     first = mul(add(2.0 * mul(w1, crossB1), mul(arc.w, crossB2)), s.speed2);
     second = 3.0 * mul(mul(arc.w, crossB1), dotB1);
-    const double mW = arc.w.cwiseAbs().maxCoeff(), mW1 = w1.cwiseAbs().maxCoeff();
-    s.scale = (2.0 * mW1 * mB * mB1 + mW * mB * mB2) * mB * mB + 3.0 * mW * mB * mB * mB1 * mB1;
+    const double mW1 = w1.cwiseAbs().maxCoeff(), rW = mW, rW1 = growth * mW;
+    const double inner = 2.0 * mW1 * mB * mB1 + mW * mB * mB2;
+    const double dInner = 2.0 * (rW1 * mB * mB1 + mW1 * rB * mB1 + mW1 * mB * rB1) +
+                          (rW * mB * mB2 + mW * rB * mB2 + mW * mB * rB2);
+    const double firstScale = inner * mB * mB + dInner * mB * mB + inner * 2.0 * mB * rB;
+    const double secondScale = 3.0 * (mW * mB * mB * mB1 * mB1 + rW * mB * mB * mB1 * mB1 +
+                                      2.0 * mW * rB * mB * mB1 * mB1 + 2.0 * mW * mB * mB * rB1 * mB1);
+    s.scale = firstScale + secondScale;
   } else {
     first = mul(crossB2, s.speed2);      // (P' x P''') |P'|^2
     second = 3.0 * mul(crossB1, dotB1);  // 3 (P' x P'') (P' . P'')
-    s.scale = mB * mB2 * mB * mB + 3.0 * mB * mB * mB1 * mB1;
+    const double firstScale = mB * mB2 * mB * mB + 3.0 * rB * mB * mB * mB2 + rB2 * mB * mB * mB;
+    const double secondScale = 3.0 * (mB * mB * mB1 * mB1 + 2.0 * rB * mB * mB1 * mB1 + 2.0 * mB * mB * rB1 * mB1);
+    s.scale = firstScale + secondScale;
   }
   s.n = sub(first, second);
   s.bx = std::move(bx);

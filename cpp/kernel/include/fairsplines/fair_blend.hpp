@@ -1,0 +1,56 @@
+// Fair blends: planar cubic B-splines between two end conditions (G1: points and tangent
+// directions; G2: also signed end curvatures) whose curvature is monotone, certified by the
+// exact Bernstein certificate (monotone.hpp), with as many spans as the ends need.
+//
+// Beyond the monotone-curvature paper, whose single short cubic covers turns under 90
+// degrees without inflection: every G1 problem with distinct points has a clothoid
+// solution (Bertolazzi & Frego 2015), whose curvature is linear in arc length. The blend
+// is the C2 cubic spline that follows that clothoid: exact end points, tangents and
+// curvatures, the clothoid's points at the interior knots, more spans until the
+// certificate proves its curvature monotone. The criterion it optimizes is closeness to
+// the clothoid of the same ends, the fairest monotone curve (its curvature varies at one
+// constant rate); the report gives the scale-free variation L^3 int (dkappa/ds)^2 ds too.
+// docs/FAIR_BLENDS.md has the derivation and the measured coverage.
+#pragma once
+#include <string>
+#include <Eigen/Core>
+#include "fairsplines/monotone.hpp"
+#include "fairsplines/types.hpp"
+
+namespace fairsplines {
+
+/// The two ends of a blend. Curvatures are signed about the plane normal: positive turns
+/// counter-clockwise seen from the normal's tip. NaN curvature: not prescribed (G1 at that
+/// end). A zero normal: derived from the data (+Z for data in the XY plane; else the plane
+/// of the tangents and the chord, oriented to make the first turn counter-clockwise, which
+/// is refused when curvatures are prescribed, since their sign would be ambiguous).
+struct BlendEnds {
+  Eigen::Vector3d p0 = Eigen::Vector3d::Zero(), t0 = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d p1 = Eigen::Vector3d::UnitX(), t1 = Eigen::Vector3d::UnitX();
+  double k0 = std::numeric_limits<double>::quiet_NaN(), k1 = std::numeric_limits<double>::quiet_NaN();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+};
+
+struct FairBlend {
+  BSplineCurve curve;                     ///< planar cubic, 3 columns, clamped, C2 inside
+  MonotonicityCertificate certificate;    ///< the exact certificate of `curve`
+  bool monotone = false;                  ///< certificate.monotone
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< the plane normal curvatures refer to
+  double kappa0 = 0.0, kappa1 = 0.0;      ///< end curvatures of `curve`, signed about `normal`
+  double turning = 0.0;                   ///< total tangent turning, radians, signed about `normal`
+  double length = 0.0;                    ///< arc length of the clothoid followed
+  double variation = 0.0;                 ///< L^3 int (dkappa/ds)^2 ds of `curve` (curvatureVariation)
+  int spans = 0;
+  std::string reason;                     ///< how it was found, or why it is not monotone
+};
+
+/// The fair G1 blend: the C2 cubic spline through p0 with direction t0 and p1 with
+/// direction t1 that follows the G1 Hermite clothoid of those ends (the one turning less
+/// than a full turn), its end curvatures the clothoid's, certified monotone.
+/// Straight ends (collinear, same direction) give the segment. Prescribed curvatures
+/// (k0, k1) are not yet solved here: they throw InputError naming that.
+/// Throws InputError on non-finite input, a zero tangent or normal, coincident points, a
+/// tangent or the chord out of the plane of `normal`, or no plane at all.
+FairBlend fairBlend(const BlendEnds& ends);
+
+}  // namespace fairsplines

@@ -1,0 +1,206 @@
+// Fair blends: the G1 Hermite clothoid (Bertolazzi & Frego) and the certified C2 cubic that
+// follows it. OCCT's evaluation of the returned curves is the referee; the clothoids of the
+// tests are integrated independently (adaptive Simpson on the angle, not the Fresnel moments).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <Geom_BSplineCurve.hxx>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "clothoid.hpp"
+#include "fairsplines/fair_blend.hpp"
+#include "fairsplines/occt.hpp"
+
+using namespace fairsplines;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// An independent clothoid integrator: Simpson's rule with 20000 intervals on the angle.
+Vector2d clothoidPoint(double theta0, double kappa0, double dkappa, double s) {
+  const int n = 20000;
+  const double h = s / n;
+  Vector2d sum = Vector2d::Zero();
+  for (int i = 0; i <= n; ++i) {
+    const double x = i * h, th = theta0 + x * (kappa0 + 0.5 * dkappa * x);
+    const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    sum += w * Vector2d(std::cos(th), std::sin(th));
+  }
+  return sum * h / 3.0;
+}
+
+// A random clothoid arc as G1 (and G2) end data, in a random plane, scale and placement.
+struct Arc {
+  BlendEnds ends;
+  double kappa0 = 0, kappa1 = 0;  // signed about ends.normal (kept for G2)
+  double absTurning = 0;          // integral of |kappa| ds, radians
+  double turning = 0;             // integral of kappa ds, radians
+  bool sShaped = false;
+};
+
+Arc randomArc(std::mt19937& rng, bool threeD) {
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  Arc a;
+  a.sShaped = U(rng) < 0.4;
+  const double total = (5.0 + 295.0 * U(rng)) * kPi / 180.0;  // integral |kappa| ds over unit length
+  double k0, k1;
+  if (a.sShaped) {  // opposite signs: |k0| + |k1| from the split of the total
+    const double f = 0.1 + 0.8 * U(rng);
+    // integral |kappa| of a line through k0 < 0 < k1 over [0, 1] = (k0^2 + k1^2) / (2 (k1 - k0)).
+    const double r = f / (1.0 - f);  // |k0| / k1
+    k1 = 2.0 * total * (1.0 + r) / (r * r + 1.0);
+    k0 = -r * k1;
+  } else {
+    const double f = U(rng);  // k0 = f * 2 total, k1 = (1 - f) * 2 total: (k0 + k1) / 2 = total
+    k0 = 2.0 * total * f;
+    k1 = 2.0 * total * (1.0 - f);
+  }
+  if (U(rng) < 0.5) std::swap(k0, k1);
+  if (U(rng) < 0.5) k0 = -k0, k1 = -k1;  // mirror image
+  const double theta0 = 2.0 * kPi * U(rng);
+  const Vector2d q1 = clothoidPoint(theta0, k0, k1 - k0, 1.0);
+  const double theta1 = theta0 + 0.5 * (k0 + k1);
+  const double scale = std::pow(10.0, -3.0 + 6.0 * U(rng));
+  Vector3d e1 = Vector3d::UnitX(), e2 = Vector3d::UnitY(), n = Vector3d::UnitZ();
+  if (threeD) {
+    n = Vector3d(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5).normalized();
+    e1 = n.unitOrthogonal();
+    e2 = n.cross(e1);
+  }
+  const Vector3d origin = std::pow(10.0, -2.0 + 4.0 * U(rng)) * Vector3d(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+  a.ends.p0 = origin;
+  a.ends.p1 = origin + scale * (q1.x() * e1 + q1.y() * e2);
+  a.ends.t0 = std::cos(theta0) * e1 + std::sin(theta0) * e2;
+  a.ends.t1 = std::cos(theta1) * e1 + std::sin(theta1) * e2;
+  a.ends.normal = n;
+  a.kappa0 = k0 / scale;
+  a.kappa1 = k1 / scale;
+  a.absTurning = total;
+  a.turning = 0.5 * (k0 + k1);
+  return a;
+}
+
+// Signed curvature of an OCCT curve about n at u.
+double kappaAbout(const Handle(Geom_BSplineCurve)& c, const Vector3d& n, double u) {
+  gp_Pnt p;
+  gp_Vec d1, d2;
+  c->D2(u, p, d1, d2);
+  const gp_Vec x = d1.Crossed(d2);
+  return (x.X() * n.x() + x.Y() * n.y() + x.Z() * n.z()) / std::pow(d1.Magnitude(), 3);
+}
+
+// Curvature sampled densely is monotone (one direction, up to rounding of the samples).
+bool monotoneBySampling(const Handle(Geom_BSplineCurve)& c, const Vector3d& n, int samples = 2000) {
+  const double u0 = c->FirstParameter(), u1 = c->LastParameter();
+  std::vector<double> k(samples + 1);
+  double scale = 0.0;
+  for (int i = 0; i <= samples; ++i) {
+    k[i] = kappaAbout(c, n, u0 + (u1 - u0) * i / samples);
+    scale = std::max(scale, std::abs(k[i]));
+  }
+  bool up = true, down = true;
+  for (int i = 0; i < samples; ++i) {
+    const double d = k[i + 1] - k[i];
+    if (d < -1e-9 * scale) up = false;
+    if (d > 1e-9 * scale) down = false;
+  }
+  return up || down;
+}
+
+double angleBetween(const gp_Vec& a, const Vector3d& b) {
+  const Vector3d v(a.X(), a.Y(), a.Z());
+  return std::atan2(v.cross(b).norm(), v.dot(b));
+}
+
+}  // namespace
+
+TEST(Clothoid, FresnelMomentsMatchDirectQuadrature) {
+  for (double a : {0.0, 1e-9, 0.7, -3.0, 25.0}) {
+    for (double b : {0.0, -1.5, 4.0}) {
+      const detail::FresnelMoments m = detail::fresnelMoments(a, b, 0.3);
+      // Simpson with 100000 intervals.
+      const int n = 100000;
+      double X[3] = {0, 0, 0}, Y[3] = {0, 0, 0};
+      for (int i = 0; i <= n; ++i) {
+        const double t = static_cast<double>(i) / n, w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+        const double psi = 0.5 * a * t * t + b * t + 0.3;
+        for (int k = 0; k < 3; ++k) {
+          X[k] += w * std::pow(t, k) * std::cos(psi) / (3.0 * n);
+          Y[k] += w * std::pow(t, k) * std::sin(psi) / (3.0 * n);
+        }
+      }
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(m.X[k], X[k], 1e-12) << a << " " << b << " " << k;
+        EXPECT_NEAR(m.Y[k], Y[k], 1e-12) << a << " " << b << " " << k;
+      }
+    }
+  }
+}
+
+TEST(Clothoid, G1SolutionRecoversTheArcThatMadeTheEnds) {
+  std::mt19937 rng(7);
+  int recovered = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Arc a = randomArc(rng, false);
+    const Vector3d d = a.ends.p1 - a.ends.p0;
+    const double r = d.norm();
+    const Vector2d p1(d.x() / r, d.y() / r);
+    const double th0 = std::atan2(a.ends.t0.y(), a.ends.t0.x()), th1 = std::atan2(a.ends.t1.y(), a.ends.t1.x());
+    const detail::Clothoid c = detail::clothoidG1(Vector2d::Zero(), th0, p1, th1);
+    // Its end point and tangent are the data (the end point by the independent integrator).
+    const Vector2d end = clothoidPoint(c.theta0, c.kappa0, c.dkappa, c.length);
+    EXPECT_NEAR((end - p1).norm(), 0.0, 1e-9) << i;
+    EXPECT_NEAR(std::remainder(c.theta(c.length) - th1, 2 * kPi), 0.0, 1e-12) << i;
+    EXPECT_GT(c.length, 1.0 - 1e-12) << i;
+    // Where the generating arc's chord angles lie in (-pi, pi) it is the solution
+    // (Bertolazzi & Frego: unique there): the same curvatures, in chord units.
+    const double phi0 = std::remainder(th0 - std::atan2(p1.y(), p1.x()), 2 * kPi);
+    if (std::abs(phi0 + a.turning) < kPi - 1e-6) {
+      ++recovered;
+      EXPECT_NEAR(c.kappa0, a.kappa0 * r, 1e-8 * (1.0 + std::abs(a.kappa0 * r))) << i;
+      EXPECT_NEAR(c.kappa(c.length), a.kappa1 * r, 1e-8 * (1.0 + std::abs(a.kappa1 * r))) << i;
+      EXPECT_NEAR(c.theta(c.length) - c.theta0, a.turning, 1e-9) << i;
+    }
+  }
+  EXPECT_GT(recovered, 200);
+}
+
+// The G1 benchmark set: 1000 clothoid arcs, C- and S-shaped, 5 to 300 degrees of
+// turning, random scale, placement, orientation, mirror image, half of them in 3D planes.
+TEST(FairBlend, G1SolvesEveryClothoidArcWithExactEndsAndCertifiedMonotoneCurvature) {
+  std::mt19937 rng(2026);
+  int solved = 0, maxSpans = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Arc a = randomArc(rng, i % 2 == 1);
+    BlendEnds g1 = a.ends;
+    if (i % 4 == 1) g1.normal = Vector3d::Zero();  // derived from the data
+    const FairBlend b = fairBlend(g1);
+    const Handle(Geom_BSplineCurve) c = toOcct(b.curve);
+    const double size = std::max({a.ends.p0.norm(), a.ends.p1.norm(), (a.ends.p1 - a.ends.p0).norm()});
+    const gp_Pnt s = c->Value(c->FirstParameter()), e = c->Value(c->LastParameter());
+    EXPECT_LE((Vector3d(s.X(), s.Y(), s.Z()) - a.ends.p0).norm(), 1e-12 * size) << i;
+    EXPECT_LE((Vector3d(e.X(), e.Y(), e.Z()) - a.ends.p1).norm(), 1e-12 * size) << i;
+    // Directions to 1e-12, or to what the poles' coordinates can hold: a small blend far
+    // from the origin has end legs of 1e-5 of its coordinates, each rounded to 1 ulp.
+    const Eigen::Index last = b.curve.poles.rows() - 1;
+    const double leg0 = (b.curve.poles.row(1) - b.curve.poles.row(0)).norm();
+    const double leg1 = (b.curve.poles.row(last) - b.curve.poles.row(last - 1)).norm();
+    const double ulp = std::numeric_limits<double>::epsilon();
+    EXPECT_LE(angleBetween(c->DN(c->FirstParameter(), 1), a.ends.t0), 1e-12 + 4 * ulp * a.ends.p0.norm() / leg0) << i;
+    EXPECT_LE(angleBetween(c->DN(c->LastParameter(), 1), a.ends.t1), 1e-12 + 4 * ulp * a.ends.p1.norm() / leg1) << i;
+    const Vector3d n = b.normal;
+    const bool sampled = monotoneBySampling(c, n);
+    EXPECT_EQ(b.monotone, sampled) << i << ": " << b.reason;
+    if (b.monotone && sampled) ++solved;
+    maxSpans = std::max(maxSpans, b.spans);
+  }
+  EXPECT_EQ(solved, 1000);
+  std::printf("G1: %d of 1000 solved, at most %d spans\n", solved, maxSpans);
+}
+
