@@ -47,6 +47,7 @@ from .monotone import (  # noqa: E402
     curvature_variation,
     derivative_polygons,
 )
+from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution  # noqa: E402
 
 __all__ = [
     "InputError",
@@ -74,6 +75,9 @@ __all__ = [
     "join_naive",
     "freeform_knots",
     "NoMonotoneSolution",
+    "fair_blend",
+    "fair_blend_solution",
+    "FairBlendReport",
     "monotone_curvature_spline",
     "monotone_curvature_solution",
     "monotone_curvature_design",

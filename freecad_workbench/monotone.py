@@ -161,7 +161,11 @@ def check_monotone_curvature(curve, rel_tol=1e-12):
     span; for non-periodic polynomial cubics also the paper's Lemmas 1-3 per segment.
     Raises InputError for a non-planar curve."""
     kernel_curve = from_part(curve)
-    cert = _kernel.certify_monotone(kernel_curve, float(rel_tol))
+    return report_from_certificate(_kernel.certify_monotone(kernel_curve, float(rel_tol)), kernel_curve)
+
+
+def report_from_certificate(cert, kernel_curve):
+    """The MonotonicityReport of the kernel's certificate (a dict) of kernel_curve."""
     paper = [None] * len(cert["spans"])
     if kernel_curve.degree == 3 and not kernel_curve.rational and not kernel_curve.periodic:
         paper = [s["reason"] for s in _kernel.check_segments(kernel_curve)]

@@ -34,6 +34,18 @@ const char* trendName(CurvatureTrend trend) {
 
 }  // namespace
 
+py::dict certificateDict(const MonotonicityCertificate& c) {
+  py::list spans;
+  for (const SpanCertificate& s : c.spans) {
+    spans.append(py::dict("u0"_a = s.u0, "u1"_a = s.u1, "kappa0"_a = s.kappa0, "kappa1"_a = s.kappa1,
+                          "trend"_a = trendName(s.trend), "degree"_a = s.degree, "pieces"_a = s.pieces, "at"_a = s.at,
+                          "kappa_at"_a = s.kappaAt, "maximum"_a = s.maximum, "reason"_a = s.reason));
+  }
+  return py::dict("monotone"_a = c.monotone, "increasing"_a = c.increasing, "decreasing"_a = c.decreasing,
+                  "normal"_a = c.normal, "kappa_start"_a = c.kappaStart, "kappa_end"_a = c.kappaEnd,
+                  "reason"_a = c.reason, "spans"_a = spans);
+}
+
 void bindMonotone(py::module_& m) {
   // No curve of the family meets the end conditions: a subclass of InputError (a ValueError).
   static py::exception<NoMonotoneSolution> noSolution(m, "NoMonotoneSolution", m.attr("InputError"));
@@ -99,19 +111,7 @@ void bindMonotone(py::module_& m) {
 
   m.def(
       "certify_monotone",
-      [](const BSplineCurve& curve, double relTol) {
-        const MonotonicityCertificate c = certifyMonotoneCurvature(curve, relTol);
-        py::list spans;
-        for (const SpanCertificate& s : c.spans) {
-          spans.append(py::dict("u0"_a = s.u0, "u1"_a = s.u1, "kappa0"_a = s.kappa0, "kappa1"_a = s.kappa1,
-                                "trend"_a = trendName(s.trend), "degree"_a = s.degree, "pieces"_a = s.pieces,
-                                "at"_a = s.at, "kappa_at"_a = s.kappaAt, "maximum"_a = s.maximum,
-                                "reason"_a = s.reason));
-        }
-        return py::dict("monotone"_a = c.monotone, "increasing"_a = c.increasing, "decreasing"_a = c.decreasing,
-                        "normal"_a = c.normal, "kappa_start"_a = c.kappaStart, "kappa_end"_a = c.kappaEnd,
-                        "reason"_a = c.reason, "spans"_a = spans);
-      },
+      [](const BSplineCurve& curve, double relTol) { return certificateDict(certifyMonotoneCurvature(curve, relTol)); },
       "curve"_a, "rel_tol"_a = 1e-12, "The exact monotonicity certificate of a planar B-spline.");
 
   m.def("curvature_variation", &curvatureVariation, "curve"_a,

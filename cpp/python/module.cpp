@@ -27,4 +27,5 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindBlend(m);
   fairsplines::python::bindBlendC1(m);
   fairsplines::python::bindMonotone(m);
+  fairsplines::python::bindFairBlend(m);
 }

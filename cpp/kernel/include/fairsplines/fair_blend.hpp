@@ -12,6 +12,7 @@
 // constant rate); the report gives the scale-free variation L^3 int (dkappa/ds)^2 ds too.
 // docs/FAIR_BLENDS.md has the derivation and the measured coverage.
 #pragma once
+#include <limits>
 #include <string>
 #include <Eigen/Core>
 #include "fairsplines/monotone.hpp"

@@ -1,0 +1,212 @@
+"""Fair blends: planar cubic B-splines between two end conditions whose curvature is
+monotone, proved by the exact certificate (check_monotone_curvature), with as many spans as
+the ends need.
+
+    import freecad_workbench as fw
+    curve, report = fw.fair_blend(line.toShape(), "end", arc.toShape(), "start", continuity="G1")
+    report.monotone, report.spans, report.variation
+
+G1 ends (points and tangent directions) are solved for every pair of distinct points: the
+blend follows the G1 Hermite clothoid of the ends (Bertolazzi & Frego 2015; the one turning
+less than a full turn, and of those the one whose curvature varies least), whose curvature
+is linear in arc length, as a C2 cubic spline (rational about a circle of the same turning,
+so arcs stay exact) with the clothoid's end curvatures, refined until the certificate proves
+its curvature monotone. Fairness: closeness to that clothoid; the report gives the
+scale-free variation L^3 * integral (dkappa/ds)^2 ds as well. docs/FAIR_BLENDS.md has the
+construction and the measured coverage.
+
+Curvatures are signed about the plane normal: positive turns counter-clockwise seen from
+the normal's tip (+Z for data in the XY plane).
+"""
+from dataclasses import dataclass
+from typing import Optional, Tuple
+
+import numpy as np
+
+from . import _kernel
+from .errors import InputError
+from .kernel import as_vector, to_part
+from .monotone import MonotonicityReport, report_from_certificate
+
+CONTINUITIES = ("G1", "G2")
+END_NAMES = ("start", "end")
+
+
+@dataclass(frozen=True)
+class FairBlendReport:
+    """How a fair blend came out."""
+
+    monotone: bool  #: the certificate proves the curvature monotone
+    continuity: str  #: "G1" or "G2": what the ends were matched to
+    kappa0: float  #: curvature at the start, signed about `normal`
+    kappa1: float  #: curvature at the end
+    turning: float  #: total tangent turning, radians, signed about `normal`
+    length: float  #: arc length of the clothoid the blend follows
+    variation: float  #: scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds
+    spans: int  #: knot spans of the cubic
+    extrema: Tuple[Tuple[float, float, bool], ...]  #: interior curvature extrema (u, kappa, is_maximum)
+    normal: Tuple[float, float, float]
+    certificate: MonotonicityReport
+    reason: str
+
+    def __bool__(self):
+        return self.monotone
+
+
+def _optional_curvature(value, name):
+    if value is None:
+        return float("nan")
+    try:
+        k = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a number, got {value!r}") from None
+    if not np.isfinite(k):
+        raise InputError(f"{name} must be finite, got {k}")
+    return k
+
+
+def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
+    """The fair blend from p0 with direction t0 to p1 with direction t1 (G1), or also with
+    the signed end curvatures k0, k1 (G2): (Part.BSplineCurve, FairBlendReport).
+    normal: the plane normal the curvatures refer to (default: +Z for data in the XY plane,
+    else derived from the data, which needs no sign for G1 only).
+    Raises InputError on bad input: NaN, a zero tangent, coincident points, ends not in one
+    plane. Prescribed curvatures (G2) are not solved yet and raise InputError saying so."""
+    result = _kernel.fair_blend(
+        as_vector(p0, "p0"),
+        as_vector(t0, "t0"),
+        as_vector(p1, "p1"),
+        as_vector(t1, "t1"),
+        _optional_curvature(k0, "k0"),
+        _optional_curvature(k1, "k1"),
+        np.zeros(3) if normal is None else as_vector(normal, "normal"),
+    )
+    kernel_curve = result["curve"]
+    certificate = report_from_certificate(result["certificate"], kernel_curve)
+    extrema = tuple(s.extremum for s in certificate.spans if s.extremum is not None)
+    report = FairBlendReport(
+        monotone=bool(result["monotone"]),
+        continuity="G1" if k0 is None and k1 is None else "G2",
+        kappa0=float(result["kappa0"]),
+        kappa1=float(result["kappa1"]),
+        turning=float(result["turning"]),
+        length=float(result["length"]),
+        variation=float(result["variation"]),
+        spans=int(result["spans"]),
+        extrema=extrema,
+        normal=tuple(float(c) for c in result["normal"]),
+        certificate=certificate,
+        reason=result["reason"],
+    )
+    return to_part(kernel_curve), report
+
+
+# ---------------------------------------------------------------------------------------
+# Ends taken from edges.
+
+
+@dataclass(frozen=True)
+class EdgeEnd:
+    """Where a blend meets an edge: the point, the blend's direction there, and the second
+    derivative of the edge traversed in that direction (for the signed curvature)."""
+
+    point: np.ndarray
+    tangent: np.ndarray  #: unit, the blend's direction of travel
+    d1: np.ndarray  #: first derivative along the blend's direction of travel
+    d2: np.ndarray  #: second derivative, same traversal
+
+
+def _edge_of(item, name):
+    import Part
+
+    if isinstance(item, Part.Edge):
+        return item
+    if isinstance(item, Part.Shape):
+        if len(item.Edges) == 1:
+            return item.Edges[0]
+        raise InputError(f"{name} has {len(item.Edges)} edges: give one edge")
+    if hasattr(item, "toShape"):  # a Part curve or a Sketcher geometry
+        try:
+            return item.toShape()
+        except Exception as exc:  # noqa: BLE001  (OCCT's message names the problem)
+            raise InputError(f"{name} cannot be made an edge: {exc}") from None
+    raise InputError(f"{name} is not an edge or a curve: {item!r}")
+
+
+def _end_parameter(edge, end, name):
+    first, last = edge.FirstParameter, edge.LastParameter
+    if isinstance(end, str):
+        if end not in END_NAMES:
+            raise InputError(f"{name} must be 'start', 'end', a vertex or a point, got {end!r}")
+        return first if end == "start" else last
+    import Part
+
+    point = end.Point if isinstance(end, Part.Vertex) else end
+    q = as_vector(point, name)
+    ends = [(np.linalg.norm(np.array(edge.valueAt(u)) - q), u) for u in (first, last)]
+    return min(ends)[1]
+
+
+def edge_end(edge_like, end, leaving, name="edge"):
+    """The EdgeEnd of an edge (Part.Edge, a one-edge shape, a Part curve or a Sketcher
+    geometry) at `end` ("start", "end", or a vertex or point: the nearer end). leaving: the
+    blend leaves the edge there (it continues the edge), else it arrives (and runs on into
+    the edge). Derivatives are OCCT's at the edge's end parameter."""
+    edge = _edge_of(edge_like, name)
+    u = _end_parameter(edge, end, name + " end")
+    at_last = u == edge.LastParameter
+    # The blend travels along the edge's parameter if it leaves at the last end or arrives at
+    # the first; otherwise against it, which flips the first derivative only.
+    forward = at_last == leaving
+    d1 = np.array(edge.derivative1At(u))
+    d2 = np.array(edge.derivative2At(u))
+    if not forward:
+        d1 = -d1
+    norm = np.linalg.norm(d1)
+    if not (norm > 0.0 and np.isfinite(norm)):
+        raise InputError(f"{name} has no tangent at that end (zero derivative)")
+    return EdgeEnd(np.array(edge.valueAt(u)), d1 / norm, d1, d2)
+
+
+def _plane_normal(a, b):
+    """A normal of the plane of two ends: +Z when everything lies in a plane parallel to XY;
+    else the plane of the chord and the tangents, or of the chord and the edges' second
+    derivatives when the tangents run along the chord. None when all is on one line."""
+    chord = b.point - a.point
+    vectors = [chord, a.tangent, b.tangent, a.d2, b.d2]
+    scale = max(np.linalg.norm(v) for v in vectors)
+    if all(abs(v[2]) <= 1e-12 * max(scale, 1e-300) for v in vectors):
+        return np.array([0.0, 0.0, 1.0])
+    u = chord / np.linalg.norm(chord)
+    for candidates in ((a.tangent, b.tangent), (a.d2, b.d2)):
+        n = max((np.cross(u, v) for v in candidates), key=np.linalg.norm)
+        if np.linalg.norm(n) > 1e-12 * max(np.linalg.norm(candidates[0]), np.linalg.norm(candidates[1]), 1e-300):
+            return n / np.linalg.norm(n)
+    return None
+
+
+def _signed_curvature(end, normal):
+    return float(np.dot(np.cross(end.d1, end.d2), normal) / np.linalg.norm(end.d1) ** 3)
+
+
+def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G1"):
+    """The fair blend from edge_a's end `end_a` to edge_b's end `end_b`: it leaves edge_a
+    continuing it and runs on into edge_b, matching their tangents (G1) or also their
+    curvatures (G2), as OCCT evaluates the edges there. Edges: Part or Sketcher lines, arcs,
+    conics, B-splines (an edge, a one-edge shape, or the geometry). end_*: "start", "end", or
+    a vertex or point (the nearer end of that edge).
+    Returns (Part.BSplineCurve, FairBlendReport). Raises InputError on bad input; G2 is not
+    solved yet and raises InputError saying so."""
+    if continuity not in CONTINUITIES:
+        raise InputError(f"unknown continuity {continuity!r}: use 'G1' or 'G2'")
+    a = edge_end(edge_a, end_a, leaving=True, name="edge_a")
+    b = edge_end(edge_b, end_b, leaving=False, name="edge_b")
+    normal = _plane_normal(a, b)
+    k0 = k1 = None
+    if continuity == "G2":
+        if normal is None:  # straight ends and straight edges: any plane through them, curvatures 0
+            normal = np.cross(a.tangent, [1.0, 0.0, 0.0] if abs(a.tangent[0]) < 0.9 else [0.0, 1.0, 0.0])
+            normal /= np.linalg.norm(normal)
+        k0, k1 = _signed_curvature(a, normal), _signed_curvature(b, normal)
+    return fair_blend_solution(a.point, a.tangent, b.point, b.tangent, k0, k1, normal)
+
