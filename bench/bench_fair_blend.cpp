@@ -143,6 +143,8 @@ int main() {
 
   std::vector<double> ours, occtTimes;
   std::vector<int> spans;
+  std::vector<double> paperTimes;
+  int paperSolved = 0, paperAlsoOurs = 0;
   int solved = 0, occtComputed = 0, occtMatching = 0, occtMonotone = 0, bezierMonotone = 0;
   long bezierTotal = 0;
   int bezierMax = 0;
@@ -157,6 +159,14 @@ int main() {
     ours.push_back(best);
     spans.push_back(b.spans);
     solved += b.monotone;
+    const auto tp = Clock::now();
+    try {  // the paper's family (Algorithm 2, fairest solver): one cubic, turns under 90 degrees
+      monotoneCurvatureSpline(a.ends.p0, a.ends.t0, a.ends.p1, a.ends.t1);
+      ++paperSolved;
+      paperAlsoOurs += b.monotone;
+    } catch (const NoMonotoneSolution&) {
+    }
+    paperTimes.push_back(seconds(tp));
     const Local l = localEnds(a.ends);
     const Occt o = minimalVariation(l, angle2Sign);
     occtTimes.push_back(o.time);
@@ -177,6 +187,9 @@ int main() {
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (computed %.1f%%, meets the ends %.1f%%; Angle2 sign %+g)\n",
               "OCCT FairCurve_MinimalVariation (G1)", occtMonotone / 10.0, 1e3 * quantile(occtTimes, 0.5),
               1e3 * quantile(occtTimes, 0.99), occtComputed / 10.0, occtMatching / 10.0, angle2Sign);
+  std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (of these, fairBlend solves %d)\n",
+              "the paper's single cubic (Algorithm 2)", paperSolved / 10.0, 1e3 * quantile(paperTimes, 0.5),
+              1e3 * quantile(paperTimes, 0.99), paperAlsoOurs);
   std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n",
               "Bezier matching the end tangents (legs r/3)", bezierMonotone / 10.0, bezierTotal / 1000.0, bezierMax);
   std::printf("median ratio OCCT / fairBlend: %.1fx\n", quantile(occtTimes, 0.5) / quantile(ours, 0.5));
