@@ -3,6 +3,7 @@
 #include "fairsplines/fair_blend.hpp"
 
 #include <BSplCLib.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <math_Matrix.hxx>
 
@@ -11,10 +12,14 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "clothoid.hpp"
+#include "spiral.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/occt.hpp"
 
 namespace fairsplines {
 namespace {
@@ -22,6 +27,7 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using detail::Clothoid;
+constexpr double kPi = 3.14159265358979323846;
 
 // ---------------------------------------------------------------------------------------
 // The plane of the blend.
@@ -94,7 +100,11 @@ struct Jet1 {
 
 struct ReferenceCircle {
   double Theta = 0.0, t = 0.0;
-  explicit ReferenceCircle(double turning) : Theta(turning), t(std::tan(0.25 * turning)) {}
+  // Beyond 1.75 pi the weights of the middle would fall towards 0: the reference turns
+  // that much at most (the construction stays valid; circles of more turning are then
+  // followed, not reproduced).
+  explicit ReferenceCircle(double turning)
+      : Theta(std::clamp(turning, -1.75 * kPi, 1.75 * kPi)), t(std::tan(0.25 * Theta)) {}
   Jet1 weight(double u) const {
     const double v = 2.0 * u - 1.0, q = 1.0 + t * t;
     return {(1.0 + t * t * v * v) / q, 4.0 * t * t * v / q, 8.0 * t * t / q};
@@ -135,12 +145,14 @@ std::vector<double> firstKnots(int m) {
   return sigma;
 }
 
-/// The C2 cubic on the knots u = ref.parameterAt(sigma) whose homogeneous form
+/// The C2 cubic on the knots u = ref.parameterAt(sigma) that follows the curve c (a
+/// Clothoid or a Spiral: its length and point(s)): its homogeneous form
 /// F = (w x, w y, w) interpolates the target at every interior knot but the first and
 /// the last, and has the target's 2-jets at u = 0 and u = 1. nullopt when a control
 /// weight is not positive.
-std::optional<BSplineCurve> followClothoid(const Clothoid& c, const ReferenceCircle& ref, const Ends2& e,
-                                           const std::vector<double>& sigma) {
+template <class Curve>
+std::optional<BSplineCurve> followCurve(const Curve& c, const ReferenceCircle& ref, const Ends2& e,
+                                        const std::vector<double>& sigma) {
   const int K = static_cast<int>(sigma.size());  // distinct knots
   Eigen::VectorXd u(K);
   for (int i = 0; i < K; ++i) u[i] = ref.parameterAt(sigma[i]);
@@ -230,19 +242,93 @@ BSplineCurve toModel(const BSplineCurve& local, const Plane& p, double r, const 
   return out;
 }
 
+/// Signed curvature about n at the start (atEnd false) or the end of the curve, by OCCT.
+double endCurvature(const BSplineCurve& curve, const Vec3& n, bool atEnd) {
+  const Handle(Geom_BSplineCurve) c = toOcct(curve);
+  gp_Pnt p;
+  gp_Vec d1, d2;
+  c->D2(atEnd ? c->LastParameter() : c->FirstParameter(), p, d1, d2);
+  const gp_Vec x = d1.Crossed(d2);
+  return (x.X() * n.x() + x.Y() * n.y() + x.Z() * n.z()) / std::pow(d1.Magnitude(), 3);
+}
+
+/// G2 ends to rounding: the end curvature of a B-spline, rational or not, is proportional
+/// to the distance of the third pole from the tangent line through the first two, so that
+/// distance is scaled by target / actual (one step is exact; the interior moves by the
+/// 1e-9 that the solve left).
+void matchEndCurvatures(BSplineCurve& curve, const Vec3& n, const BlendEnds& e) {
+  const Eigen::Index last = curve.poles.rows() - 1;
+  if (last < 5) return;
+  for (const bool atEnd : {false, true}) {
+    const double target = atEnd ? e.k1 : e.k0, actual = endCurvature(curve, n, atEnd);
+    const Eigen::Index i1 = atEnd ? last - 1 : 1, i2 = atEnd ? last - 2 : 2;
+    const Vec3 P1 = curve.poles.row(i1).transpose(), P2 = curve.poles.row(i2).transpose();
+    const Vec3 t = (atEnd ? e.t1 : e.t0).normalized();
+    const Vec3 along = (P2 - P1).dot(t) * t, across = (P2 - P1) - along;
+    if (!(std::abs(actual) > 0.0)) {
+      if (target == 0.0) continue;
+      return;  // nothing to scale: left as solved
+    }
+    curve.poles.row(i2) = (P1 + along + (target / actual) * across).transpose();
+  }
+}
+
 std::string describeTrend(const MonotonicityCertificate& cert) {
   if (cert.increasing && cert.decreasing) return "constant";
   return cert.increasing ? "increasing" : "decreasing";
 }
 
+/// The cubic that follows c, certified: spans are halved where the certificate does not
+/// prove the curvature to run the way `wanted` (with two neighbours on each side), until it
+/// does or the limits are reached (refine = false: one try). Returns the last cubic and
+/// whether it was proved monotone.
+template <class Curve>
+std::pair<BSplineCurve, bool> certifiedFollow(const Curve& c, double turning, const Ends2& e, CurvatureTrend wanted,
+                                              bool refine) {
+  const ReferenceCircle ref(turning);
+  std::vector<double> sigma = firstKnots(refine ? 4 : 8);
+  BSplineCurve local;
+  for (int round = 0; round < kMaxRounds && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
+    std::optional<BSplineCurve> candidate = followCurve(c, ref, e, sigma);
+    std::vector<double> refined{sigma[0]};
+    const int spans = static_cast<int>(sigma.size()) - 1;
+    std::vector<char> halve(spans, 0);
+    if (!candidate) {  // a control weight is not positive: halve every span
+      std::fill(halve.begin(), halve.end(), 1);
+    } else {
+      local = std::move(*candidate);
+      const MonotonicityCertificate cert = certifyMonotoneCurvature(local);
+      if (cert.monotone) return {local, true};
+      if (!refine) break;
+      // The error of a span comes from its neighbours too: halve two spans on each side.
+      for (int i = 0; i < spans; ++i) {
+        const CurvatureTrend t = cert.spans[i].trend;
+        if (t == wanted || t == CurvatureTrend::Constant) continue;
+        for (int k = std::max(0, i - 2); k <= std::min(spans - 1, i + 2); ++k) halve[k] = 1;
+      }
+    }
+    for (int i = 0; i < spans; ++i) {
+      if (halve[i]) refined.push_back(0.5 * (sigma[i] + sigma[i + 1]));
+      refined.push_back(sigma[i + 1]);
+    }
+    sigma = std::move(refined);
+  }
+  if (local.poles.rows() == 0) {
+    throw InputError("no cubic following the guide curve has positive weights (turning " +
+                     std::to_string(turning * 180.0 / kPi) + " degrees)");
+  }
+  return {local, false};
+}
+
 }  // namespace
 
 FairBlend fairBlend(const BlendEnds& ends) {
-  const bool curvaturesGiven = !std::isnan(ends.k0) || !std::isnan(ends.k1);
-  const Plane plane = planeOf(ends, curvaturesGiven);
-  if (curvaturesGiven) {
-    throw InputError("prescribed end curvatures (G2) are not solved by fairBlend yet: leave k0 and k1 unset for G1");
+  const bool g2 = !std::isnan(ends.k0) || !std::isnan(ends.k1);
+  if (g2 && (std::isnan(ends.k0) || std::isnan(ends.k1))) {
+    throw InputError("give both end curvatures k0 and k1 for a G2 blend, or neither for G1");
   }
+  if (g2 && !(std::isfinite(ends.k0) && std::isfinite(ends.k1))) throw InputError("the end curvatures must be finite");
+  const Plane plane = planeOf(ends, g2);
   // Normalized: chord from (0, 0) to (1, 0); lengths scale by 1 / r, curvatures by r.
   const double r = (ends.p1 - ends.p0).norm();
   const Vec2 a = plane.local(ends.t0).normalized(), b = plane.local(ends.t1).normalized();
@@ -251,66 +337,60 @@ FairBlend fairBlend(const BlendEnds& ends) {
   FairBlend out;
   out.normal = plane.normal;
   BSplineCurve local;
-  if (std::abs(theta0) <= 1e-14 && std::abs(theta1) <= 1e-14) {
+  std::ostringstream why;
+  const bool straight = std::abs(theta0) <= 1e-14 && std::abs(theta1) <= 1e-14;
+  if (straight && (!g2 || (ends.k0 == 0.0 && ends.k1 == 0.0))) {
     local = segment(Vec2::Zero(), Vec2::UnitX());
     out.length = r;
-    out.reason = "straight ends: the segment";
-  } else {
+    why << "straight ends: the segment";
+  } else if (!g2) {
     const Clothoid c = detail::clothoidG1(Vec2::Zero(), theta0, Vec2::UnitX(), theta1);
     const Ends2 e{Vec2::Zero(), Vec2::UnitX(), a, b, c.kappa0, c.kappa(c.length)};
     out.length = c.length * r;
     out.turning = c.theta(c.length) - c.theta0;
-    // Adaptive refinement: every span whose curvature is not certified to run the
-    // clothoid's way is halved (in arc length), and the spline is solved again.
-    const ReferenceCircle ref(out.turning);
     const CurvatureTrend wanted = c.dkappa > 0.0 ? CurvatureTrend::Increasing : CurvatureTrend::Decreasing;
-    std::vector<double> sigma = firstKnots(4);
-    bool found = false;
-    for (int round = 0; round < kMaxRounds && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
-      std::optional<BSplineCurve> candidate = followClothoid(c, ref, e, sigma);
-      std::vector<double> refined{sigma[0]};
-      if (!candidate) {  // a control weight is not positive: halve every span
-        for (size_t i = 1; i < sigma.size(); ++i) {
-          refined.push_back(0.5 * (sigma[i - 1] + sigma[i]));
-          refined.push_back(sigma[i]);
-        }
-      } else {
-        local = std::move(*candidate);
-        const MonotonicityCertificate cert = certifyMonotoneCurvature(local);
-        if (cert.monotone) {
-          found = true;
-          break;
-        }
-        // The error of a span comes from its neighbours too: halve two spans on each side.
-        const int spans = static_cast<int>(sigma.size()) - 1;
-        std::vector<char> halve(spans, 0);
-        for (int i = 0; i < spans; ++i) {
-          const CurvatureTrend t = cert.spans[i].trend;
-          if (t == wanted || t == CurvatureTrend::Constant) continue;
-          for (int k = std::max(0, i - 2); k <= std::min(spans - 1, i + 2); ++k) halve[k] = 1;
-        }
-        for (int i = 0; i < spans; ++i) {
-          if (halve[i]) refined.push_back(0.5 * (sigma[i] + sigma[i + 1]));
-          refined.push_back(sigma[i + 1]);
-        }
-      }
-      sigma = std::move(refined);
-    }
-    if (local.poles.rows() == 0) {
-      throw InputError("no cubic following the G1 clothoid has positive weights (turning " +
-                       std::to_string(out.turning * 180.0 / 3.14159265358979323846) + " degrees)");
-    }
-    std::ostringstream why;
-    if (found) {
-      why << "G1 clothoid (turning " << out.turning * 180.0 / 3.14159265358979323846 << " degrees) followed by "
-          << local.knots.size() - 1 << " C2 spans";
+    bool proved = false;
+    std::tie(local, proved) = certifiedFollow(c, out.turning, e, wanted, true);
+    why << "G1 clothoid (turning " << out.turning * 180.0 / kPi << " degrees) followed by "
+        << local.knots.size() - 1 << " C2 spans";
+    if (!proved) why << ", not all proved monotone";
+  } else {
+    const double k0 = ends.k0 * r, k1 = ends.k1 * r;
+    const Ends2 e{Vec2::Zero(), Vec2::UnitX(), a, b, k0, k1};
+    const detail::SpiralSolution sol = detail::solveG2Spiral(theta0, k0, theta1, k1);
+    const CurvatureTrend wanted = k1 > k0 ? CurvatureTrend::Increasing : CurvatureTrend::Decreasing;
+    if (sol.spline) {
+      const detail::ClothoidSpline& s = *sol.spline;
+      out.length = s.length * r;
+      out.turning = s.theta(s.length) - s.theta0;
+      bool proved = false;
+      std::tie(local, proved) = certifiedFollow(s, out.turning, e, wanted, true);
+      why << "G2 clothoid spline (" << s.pieces() << " pieces, turning " << out.turning * 180.0 / kPi
+          << " degrees) followed by " << local.knots.size() - 1 << " C2 spans";
+    } else if (sol.monotone || sol.fallback) {
+      const detail::Spiral& s = sol.monotone ? *sol.monotone : *sol.fallback;
+      out.length = s.length * r;
+      out.turning = s.theta(s.length) - s.theta0;
+      bool proved = false;
+      std::tie(local, proved) = certifiedFollow(s, out.turning, e, wanted, sol.monotone.has_value());
+      why << "G2 spiral (curvature cubic in arc length, turning " << out.turning * 180.0 / kPi
+          << " degrees) followed by " << local.knots.size() - 1 << " C2 spans";
+      if (!sol.monotone) why << "; no monotone curve was found" << (sol.reason.empty() ? "" : ": " + sol.reason);
     } else {
-      why << "no cubic of up to " << local.knots.size() - 1 << " spans following the G1 clothoid (turning "
-          << out.turning * 180.0 / 3.14159265358979323846 << " degrees) has certified monotone curvature";
+      // Nothing of the spiral family meets the ends: the G1 clothoid with the given end
+      // curvatures, which is G2 at both ends and as fair as its ends allow.
+      const Clothoid c = detail::clothoidG1(Vec2::Zero(), theta0, Vec2::UnitX(), theta1);
+      out.length = c.length * r;
+      out.turning = c.theta(c.length) - c.theta0;
+      std::tie(local, std::ignore) = certifiedFollow(c, out.turning, e, wanted, false);
+      why << "no monotone-curvature curve meets these G2 ends"
+          << (sol.reason.empty() ? "" : ": " + sol.reason)
+          << "; the G1 clothoid with the given end curvatures instead";
     }
-    out.reason = why.str();
   }
+  out.reason = why.str();
   out.curve = toModel(local, plane, r, ends);
+  if (g2) matchEndCurvatures(out.curve, plane.normal, ends);
   out.spans = static_cast<int>(out.curve.knots.size()) - 1;
   out.certificate = certifyMonotoneCurvature(out.curve);
   out.monotone = out.certificate.monotone;
@@ -319,7 +399,7 @@ FairBlend fairBlend(const BlendEnds& ends) {
   out.kappa1 = sign * out.certificate.kappaEnd;
   out.variation = curvatureVariation(out.curve);
   if (out.monotone) out.reason += "; curvature " + describeTrend(out.certificate) + ", certified";
-  else out.reason += ": " + out.certificate.reason;
+  else out.reason += "; not monotone: " + out.certificate.reason;
   return out;
 }
 

@@ -45,13 +45,23 @@ struct FairBlend {
   std::string reason;                     ///< how it was found, or why it is not monotone
 };
 
-/// The fair G1 blend: the C2 cubic spline through p0 with direction t0 and p1 with
-/// direction t1 that follows the G1 Hermite clothoid of those ends (the one turning less
-/// than a full turn), its end curvatures the clothoid's, certified monotone.
-/// Straight ends (collinear, same direction) give the segment. Prescribed curvatures
-/// (k0, k1) are not yet solved here: they throw InputError naming that.
+/// The fair blend of two ends, never NaN geometry.
+/// - G1 (k0, k1 NaN): the C2 cubic through p0 with direction t0 and p1 with direction t1
+///   that follows the G1 Hermite clothoid of those ends (of the clothoids turning less than
+///   a full turn, the one whose curvature varies least), its end curvatures the clothoid's.
+///   Every pair of distinct points is solved; the curve is certified monotone.
+/// - G2 (k0, k1 given): the cubic also meets the end curvatures. It follows the fairest
+///   spiral whose curvature is a cubic of arc length running monotonically from k0 to k1
+///   (spiral.hpp), over the turnings of less than a full turn that meet the tangents. Where none
+///   exists, `monotone` is false and `reason` says why: a necessary condition that fails
+///   (equal curvatures off a common circle; osculating circles not nested, or overlapping
+///   across an inflection, by the Tait-Kneser theorem), or that no such spiral was found.
+///   The curve is then the fairest non-monotone spiral found, or the G1 clothoid with the
+///   given end curvatures.
+/// Straight ends (collinear, same direction, zero curvatures) give the segment.
 /// Throws InputError on non-finite input, a zero tangent or normal, coincident points, a
-/// tangent or the chord out of the plane of `normal`, or no plane at all.
+/// tangent or the chord out of the plane of `normal`, no plane at all, only one of k0 and
+/// k1, or curvatures with data outside the XY plane and no normal.
 FairBlend fairBlend(const BlendEnds& ends);
 
 }  // namespace fairsplines

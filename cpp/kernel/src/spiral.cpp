@@ -1,0 +1,395 @@
+// Monotone spirals for G2 ends; see spiral.hpp.
+#include "spiral.hpp"
+
+#include "clothoid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+namespace fairsplines::detail {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+double normalizeAngle(double a) {
+  a = std::remainder(a, 2.0 * kPi);
+  return a <= -kPi ? a + 2.0 * kPi : a;
+}
+
+std::string num(double v) {
+  std::ostringstream out;
+  out.precision(4);
+  out << v;
+  return out.str();
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------
+// The spiral.
+
+double Spiral::c(double tau) const { return tau + tau * (1.0 - tau) * (a + b * (1.0 - 2.0 * tau)); }
+
+double Spiral::dc(double tau) const {
+  // With v = 1 - 2 tau: c' = (1 - b/2) + a v + (3b/2) v^2.
+  const double v = 1.0 - 2.0 * tau;
+  return (1.0 - 0.5 * b) + a * v + 1.5 * b * v * v;
+}
+
+double Spiral::theta(double s) const {
+  // theta0 + L (k0 tau + (k1 - k0) C(tau)), C = int_0^tau c.
+  const double t = s / length, t2 = t * t;
+  const double C = 0.5 * t2 + a * (0.5 * t2 - t2 * t / 3.0) + b * (0.5 * t2 - t2 * t + 0.5 * t2 * t2);
+  return theta0 + length * (k0 * t + (k1 - k0) * C);
+}
+
+Eigen::Vector2d Spiral::point(double s) const {
+  // Composite 8-point Gauss in panels over which the tangent turns by at most 0.5 rad.
+  const double rate = length * (std::abs(k0) + std::abs(k1 - k0) * (1.0 + 0.25 * (std::abs(a) + std::abs(b))));
+  const double tau1 = s / length;
+  const int panels = std::max(1, static_cast<int>(std::ceil(rate * std::abs(tau1) / 0.5)));
+  const double h = s / panels;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (int p = 0; p < panels; ++p) {
+    const double mid = (p + 0.5) * h;
+    for (int k = 0; k < 8; ++k) {
+      const double x = mid + (k < 4 ? -0.5 : 0.5) * h * kGx[k % 4];
+      const double th = theta(x);
+      sum += (0.5 * h * kGw[k % 4]) * Eigen::Vector2d(std::cos(th), std::sin(th));
+    }
+  }
+  return start + sum;
+}
+
+double Spiral::minSlope() const {
+  // The quadratic g(v) = (1 - b/2) + a v + (3b/2) v^2 on [-1, 1]: its ends, and its vertex.
+  double m = std::min(1.0 + b + a, 1.0 + b - a);
+  if (b > 0.0) {
+    const double v = -a / (3.0 * b);
+    if (std::abs(v) <= 1.0) m = std::min(m, 1.0 - 0.5 * b - a * a / (6.0 * b));
+  }
+  return m;
+}
+
+double Spiral::variation() const {
+  // int_0^1 c'^2 = alpha^2 + a^2/3 + beta^2/5 + 2 alpha beta / 3, alpha = 1 - b/2, beta = 3b/2.
+  const double alpha = 1.0 - 0.5 * b, beta = 1.5 * b;
+  const double integral = alpha * alpha + a * a / 3.0 + beta * beta / 5.0 + 2.0 * alpha * beta / 3.0;
+  return length * length * (k1 - k0) * (k1 - k0) * integral;
+}
+
+// ---------------------------------------------------------------------------------------
+// The clothoid spline.
+
+double ClothoidSpline::kappa(double s) const {
+  const int n = pieces();
+  const double x = std::clamp(s / length, 0.0, 1.0) * n;
+  const int i = std::min(n - 1, static_cast<int>(x));
+  const double f = x - i;
+  return k0 + (k1 - k0) * ((1.0 - f) * C[i] + f * C[i + 1]);
+}
+
+double ClothoidSpline::theta(double s) const {
+  const int n = pieces();
+  const double h = length / n, x = std::clamp(s / length, 0.0, 1.0) * n;
+  const int last = std::min(n - 1, static_cast<int>(x));
+  double th = theta0;
+  for (int i = 0; i < last; ++i) th += h * (k0 + (k1 - k0) * 0.5 * (C[i] + C[i + 1]));
+  const double f = x - last, ka = k0 + (k1 - k0) * C[last], kb = k0 + (k1 - k0) * C[last + 1];
+  return th + h * f * (ka + 0.5 * f * (kb - ka));
+}
+
+Eigen::Vector2d ClothoidSpline::point(double s) const {
+  // Piece by piece: each a clothoid arc, by the Fresnel moments.
+  const int n = pieces();
+  const double h = length / n, x = std::clamp(s / length, 0.0, 1.0) * n;
+  Eigen::Vector2d p = Eigen::Vector2d::Zero();
+  double th = theta0;
+  for (int i = 0; i < n && i < x; ++i) {
+    const double f = std::min(1.0, x - i), ka = k0 + (k1 - k0) * C[i], kb = k0 + (k1 - k0) * C[i + 1];
+    const double dk = (kb - ka) / h, sl = f * h;
+    const FresnelMoments m = fresnelMoments(dk * sl * sl, ka * sl, th);
+    p += sl * Eigen::Vector2d(m.X[0], m.Y[0]);
+    th += sl * (ka + 0.5 * dk * sl);
+  }
+  return p;
+}
+
+double ClothoidSpline::minSlope() const {
+  double m = HUGE_VAL;
+  for (int i = 0; i < pieces(); ++i) m = std::min(m, pieces() * (C[i + 1] - C[i]));
+  return m;
+}
+
+double ClothoidSpline::variation() const {
+  double sum = 0.0;
+  for (int i = 0; i < pieces(); ++i) sum += (C[i + 1] - C[i]) * (C[i + 1] - C[i]);
+  return length * length * (k1 - k0) * (k1 - k0) * pieces() * sum;
+}
+
+// ---------------------------------------------------------------------------------------
+// The G2 problem.
+
+namespace {
+
+/// Necessary conditions of monotone curvature from the Tait-Kneser theorem; "" when they hold.
+std::string kneserReason(double theta0, double k0, double theta1, double k1) {
+  const Eigen::Vector2d p0(0.0, 0.0), p1(1.0, 0.0);
+  const Eigen::Vector2d n0(-std::sin(theta0), std::cos(theta0)), n1(-std::sin(theta1), std::cos(theta1));
+  const bool inflection = (k0 < 0.0 && k1 > 0.0) || (k0 > 0.0 && k1 < 0.0);
+  if (k0 != 0.0 && k1 != 0.0) {
+    const Eigen::Vector2d c0 = p0 + n0 / k0, c1 = p1 + n1 / k1;
+    const double r0 = 1.0 / std::abs(k0), r1 = 1.0 / std::abs(k1), d = (c1 - c0).norm();
+    if (!inflection && !(d < std::abs(r0 - r1))) {
+      return "the osculating circles at the ends (radii " + num(r0) + " and " + num(r1) + " chord lengths, centres " +
+             num(d) + " apart) are not nested: along a curve whose curvature runs one way without inflection each "
+             "osculating circle lies inside the one before (Tait-Kneser)";
+    }
+    if (inflection && !(d > r0 + r1)) {
+      return "the osculating circles at the ends (radii " + num(r0) + " and " + num(r1) + " chord lengths, centres " +
+             num(d) + " apart) overlap: a curve whose curvature runs one way through one inflection has them on the "
+             "two sides of its inflection tangent";
+    }
+    return "";
+  }
+  if (k0 == 0.0 && k1 == 0.0) return "";  // handled as equal curvatures
+  // One end straight: the other end's osculating circle lies on the side the curve turns to,
+  // clear of the straight end's tangent line.
+  const bool startStraight = k0 == 0.0;
+  const Eigen::Vector2d p = startStraight ? p0 : p1, n = startStraight ? n0 : n1, q = startStraight ? p1 : p0;
+  const Eigen::Vector2d nq = startStraight ? n1 : n0;
+  const double k = startStraight ? k1 : k0;
+  const Eigen::Vector2d centre = q + nq / k;
+  const double signedDistance = (centre - p).dot(n) * (k > 0.0 ? 1.0 : -1.0);
+  if (!(signedDistance > 1.0 / std::abs(k))) {
+    return std::string("the osculating circle at the ") + (startStraight ? "end" : "start") +
+           " crosses the tangent line of the straight " + (startStraight ? "start" : "end") +
+           ": a curve whose curvature runs one way from 0 keeps its osculating circles on one side of that line "
+           "(Tait-Kneser)";
+  }
+  return "";
+}
+
+struct Candidate {
+  Spiral spiral;
+  bool converged = false;
+};
+
+/// Newton on (L, b) for the end point, with a from the turning; damped by backtracking.
+Candidate newton(Spiral s, double Theta) {
+  const double dk = s.k1 - s.k0;
+  auto shapeFor = [&](double L) { return 6.0 * ((Theta / L - s.k0) / dk - 0.5); };
+  auto residual = [&](double L, double b) {
+    Spiral t = s;
+    t.length = L;
+    t.a = shapeFor(L);
+    t.b = b;
+    return (t.point(L) - Eigen::Vector2d(1.0, 0.0)).eval();
+  };
+  double L = s.length, b = s.b;
+  Eigen::Vector2d F = residual(L, b);
+  Candidate out;
+  for (int it = 0; it < 40; ++it) {
+    if (F.norm() < 1e-13) {
+      out.converged = true;
+      break;
+    }
+    const double hL = 1e-7 * L, hb = 1e-7 * (1.0 + std::abs(b));
+    Eigen::Matrix2d J;
+    J.col(0) = (residual(L + hL, b) - residual(L - hL, b)) / (2.0 * hL);
+    J.col(1) = (residual(L, b + hb) - residual(L, b - hb)) / (2.0 * hb);
+    const Eigen::Vector2d step = J.fullPivLu().solve(F);
+    if (!step.allFinite()) break;
+    double lambda = 1.0;
+    bool improved = false;
+    for (int k = 0; k < 20; ++k, lambda *= 0.5) {
+      const double nL = L - lambda * step[0], nb = b - lambda * step[1];
+      if (!(nL > 1.0) || std::abs(nb) > 50.0) continue;  // longer than the chord; a sane shape
+      const Eigen::Vector2d nF = residual(nL, nb);
+      if (nF.norm() < F.norm()) {
+        L = nL, b = nb, F = nF;
+        improved = true;
+        break;
+      }
+    }
+    if (!improved) break;
+  }
+  if (!out.converged && F.norm() < 1e-11) out.converged = true;
+  out.spiral = s;
+  out.spiral.length = L;
+  out.spiral.a = shapeFor(L);
+  out.spiral.b = b;
+  return out;
+}
+
+/// Levenberg-Marquardt on (log L, z_1 .. z_{n-1}) with the node steps C_i - C_{i-1} the
+/// softmax of (0, z): monotone by construction. Residuals: the end point, the turning, and
+/// sqrt(mu) (n step_i - 1), which pulls towards the clothoid (equal steps); mu goes to 1e-12
+/// so that the ends are met to rounding. nullopt where it does not reach the ends.
+std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n) {
+  const int m = n;  // parameters
+  auto build = [&](const Eigen::VectorXd& x) {
+    ClothoidSpline c;
+    c.theta0 = theta0, c.k0 = k0, c.k1 = k1, c.length = std::exp(x[0]);
+    Eigen::VectorXd w(n);
+    w[0] = 1.0;
+    const double top = std::max(0.0, x.tail(n - 1).maxCoeff());
+    w[0] = std::exp(-top);
+    for (int i = 1; i < n; ++i) w[i] = std::exp(x[i] - top);
+    w /= w.sum();
+    c.C.assign(n + 1, 0.0);
+    for (int i = 0; i < n; ++i) c.C[i + 1] = c.C[i] + w[i];
+    c.C[n] = 1.0;
+    return c;
+  };
+  auto residuals = [&](const Eigen::VectorXd& x, double mu) {
+    Eigen::VectorXd r(3 + n);
+    if (!x.allFinite() || !(std::exp(x[0]) > 1.0 && std::exp(x[0]) < 1e4) || x.tail(n - 1).cwiseAbs().maxCoeff() > 40.0) {
+      r.setConstant(1e150);  // outside the sane region: longer than the chord, shorter than 1e4 chords
+      return r;
+    }
+    const ClothoidSpline c = build(x);
+    const Eigen::Vector2d end = c.point(c.length);
+    r[0] = end.x() - 1.0;
+    r[1] = end.y();
+    r[2] = c.theta(c.length) - theta0 - Theta;
+    for (int i = 0; i < n; ++i) r[3 + i] = std::sqrt(mu) * (n * (c.C[i + 1] - c.C[i]) - 1.0);
+    return r;
+  };
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(m);
+  x[0] = std::log(L0);
+  for (double mu : {1e-2, 1e-4, 1e-6}) {
+    double lambda = 1e-3;
+    Eigen::VectorXd r = residuals(x, mu);
+    for (int it = 0; it < 60; ++it) {
+      Eigen::MatrixXd J(r.size(), m);
+      for (int j = 0; j < m; ++j) {
+        Eigen::VectorXd y = x;
+        const double h = 1e-7 * (1.0 + std::abs(x[j]));
+        y[j] += h;
+        J.col(j) = (residuals(y, mu) - r) / h;
+      }
+      const Eigen::MatrixXd A = J.transpose() * J;
+      const Eigen::VectorXd g = J.transpose() * r;
+      bool improved = false;
+      for (int k = 0; k < 12; ++k) {
+        Eigen::MatrixXd D = A;
+        D.diagonal() += lambda * (A.diagonal().array() + 1e-12).matrix();
+        const Eigen::VectorXd step = D.ldlt().solve(-g);
+        if (!step.allFinite()) break;
+        const Eigen::VectorXd y = x + step;
+        if (!(std::exp(y[0]) > 1.0) || y.tail(m - 1).cwiseAbs().maxCoeff() > 40.0) {
+          lambda *= 4.0;
+          continue;
+        }
+        const Eigen::VectorXd ry = residuals(y, mu);
+        if (ry.squaredNorm() < r.squaredNorm()) {
+          x = y, r = ry, lambda = std::max(lambda / 3.0, 1e-12);
+          improved = true;
+          break;
+        }
+        lambda *= 4.0;
+      }
+      if (!improved || r.head(3).norm() < 1e-14) break;
+    }
+  }
+  // Polish: Gauss-Newton on the three end conditions alone, with minimum-norm steps, which
+  // move the profile as little as the ends need.
+  Eigen::VectorXd r = residuals(x, 0.0).head(3);
+  for (int it = 0; it < 8 && r.norm() > 1e-14; ++it) {
+    Eigen::MatrixXd J(3, m);
+    for (int j = 0; j < m; ++j) {
+      Eigen::VectorXd y = x;
+      const double h = 1e-7 * (1.0 + std::abs(x[j]));
+      y[j] += h;
+      J.col(j) = (residuals(y, 0.0).head(3) - r) / h;
+    }
+    const Eigen::VectorXd step = J.transpose() * (J * J.transpose()).ldlt().solve(-r);
+    if (!step.allFinite()) break;
+    const Eigen::VectorXd y = x + step, ry = residuals(y, 0.0).head(3);
+    if (!(ry.norm() < r.norm())) break;
+    x = y, r = ry;
+  }
+  const ClothoidSpline c = build(x);
+  if (!(r.norm() < 1e-12)) return std::nullopt;
+  return c;
+}
+
+}  // namespace
+
+SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1) {
+  SpiralSolution out;
+  const double delta = normalizeAngle(theta1 - theta0);
+  const double kmax = std::max(std::abs(k0), std::abs(k1));
+  if (std::abs(k1 - k0) <= 1e-12 * std::max(1.0, kmax)) {
+    // Equal end curvatures: a monotone curve between them is a circle arc (or a segment).
+    const double k = 0.5 * (k0 + k1);
+    for (int n = -1; n <= 1; ++n) {
+      const double Theta = delta + 2.0 * kPi * n;
+      if (!(std::abs(Theta) < 2.0 * kPi)) continue;
+      if (k == 0.0 ? Theta != 0.0 : !(Theta / k > 0.0)) continue;
+      Spiral s;
+      s.theta0 = theta0, s.k0 = s.k1 = k;
+      s.length = k == 0.0 ? 1.0 : Theta / k;
+      if ((s.point(s.length) - Eigen::Vector2d(1.0, 0.0)).norm() < 1e-9) {
+        out.monotone = s;
+        return out;
+      }
+    }
+    out.reason = "the end curvatures are equal (" + num(k) + " per chord length), so a curve whose curvature runs "
+                 "one way between them is a circle arc, and no circle of that curvature meets both ends";
+    return out;
+  }
+  out.reason = kneserReason(theta0, k0, theta1, k1);
+
+  // Starts: the length at which a profile of shape a (b = 0) has the turning, the clothoid
+  // (a = 0) first. Per winding, the starts are tried until one converges to a monotone
+  // solution; of all windings' solutions the fairest is kept.
+  std::vector<Candidate> found;
+  for (int n : {0, 1, -1}) {
+    const double Theta = delta + 2.0 * kPi * n;
+    if (!(std::abs(Theta) < 2.0 * kPi)) continue;  // a blend turns less than a full turn
+    for (double aStart : {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
+      const double mean = k0 + (k1 - k0) * (0.5 + aStart / 6.0);
+      const double L = Theta / mean;
+      if (!(L > 1.0 && L < 1e4)) continue;  // longer than the chord, and not absurdly long
+      Spiral s;
+      s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
+      const Candidate c = newton(s, Theta);
+      if (!c.converged) continue;
+      found.push_back(c);
+      if (c.spiral.minSlope() >= kMinSlope) break;
+    }
+  }
+  for (const Candidate& c : found) {
+    const Spiral& s = c.spiral;
+    if (s.minSlope() >= kMinSlope) {
+      if (!out.monotone || s.variation() < out.monotone->variation()) out.monotone = s;
+    } else if (!out.fallback || s.variation() < out.fallback->variation()) {
+      out.fallback = s;
+    }
+  }
+  if (!out.monotone) {
+    // The cubic profiles do not reach these ends monotonically: clothoid splines, which do
+    // wherever a piecewise-linear monotone curvature does.
+    for (int n : {0, 1, -1}) {
+      const double Theta = delta + 2.0 * kPi * n;
+      if (!(std::abs(Theta) < 2.0 * kPi)) continue;
+      const double mean = 0.5 * (k0 + k1);
+      const double L0 = (Theta / mean > 1.0 && Theta / mean < 1e4) ? Theta / mean : 1.5;
+      const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, 8);
+      if (c && c->minSlope() >= kMinSlope && (!out.spline || c->variation() < out.spline->variation())) out.spline = c;
+    }
+  }
+  if (out.monotone || out.spline) out.reason.clear();
+  return out;
+}
+
+}  // namespace fairsplines::detail

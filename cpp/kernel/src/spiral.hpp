@@ -1,0 +1,65 @@
+// Monotone spirals for G2 ends: curves whose curvature runs from k0 to k1 as a cubic in arc
+// length, kappa(s) = k0 + (k1 - k0) c(s / L) with c(tau) = tau + tau (1 - tau) (a + b (1 - 2 tau)),
+// c(0) = 0, c(1) = 1. a = b = 0 is the clothoid; the curvature is monotone where c' > 0.
+// Private to the kernel: the fair-blend solver follows these curves for G2 ends.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace fairsplines::detail {
+
+struct Spiral {
+  Eigen::Vector2d start = Eigen::Vector2d::Zero();
+  double theta0 = 0.0, k0 = 0.0, k1 = 0.0, length = 1.0, a = 0.0, b = 0.0;
+
+  double c(double tau) const;       ///< the profile, 0 at tau = 0, 1 at tau = 1
+  double dc(double tau) const;      ///< its derivative in tau
+  double kappa(double s) const { return k0 + (k1 - k0) * c(s / length); }
+  double theta(double s) const;     ///< theta0 + integral_0^s kappa
+  Eigen::Vector2d point(double s) const;
+  /// min over tau in [0, 1] of c'(tau): the curvature is strictly monotone when > 0.
+  double minSlope() const;
+  /// L^3 int (dkappa/ds)^2 ds = L^2 (k1 - k0)^2 int_0^1 c'^2.
+  double variation() const;
+};
+
+/// The richer family, tried where no cubic profile is monotone: n clothoid pieces of equal
+/// length L / n, the curvature continuous and piecewise linear through the node values
+/// k0 + (k1 - k0) C_j, C_0 = 0 <= C_1 <= ... <= C_n = 1 (monotone by construction).
+struct ClothoidSpline {
+  double theta0 = 0.0, k0 = 0.0, k1 = 0.0, length = 1.0;
+  std::vector<double> C;  ///< n + 1 node fractions
+
+  int pieces() const { return static_cast<int>(C.size()) - 1; }
+  double kappa(double s) const;
+  double theta(double s) const;
+  Eigen::Vector2d point(double s) const;
+  double minSlope() const;  ///< n min_i (C_i - C_{i-1}): the least c' of the profile
+  double variation() const; ///< L^2 (k1 - k0)^2 n sum (C_i - C_{i-1})^2
+};
+
+/// The outcome of the G2 problem in the chord frame (p0 = (0, 0), p1 = (1, 0)).
+struct SpiralSolution {
+  std::optional<Spiral> monotone;         ///< the fairest cubic-profile solution with c' >= kMinSlope
+  std::optional<ClothoidSpline> spline;   ///< else a monotone clothoid spline, if one was found
+  std::optional<Spiral> fallback;         ///< else the fairest solution found (curvature not monotone)
+  std::string reason;                     ///< why no monotone curve exists (a necessary condition fails), or ""
+};
+
+/// The least slope c' a solution must keep to count as monotone: the cubic that follows it
+/// needs kappa' away from 0 to be certified.
+constexpr double kMinSlope = 0.02;
+
+/// Solves the G2 problem from (0, 0), angle theta0, curvature k0, to (1, 0), angle theta1,
+/// curvature k1 (chord units), over the windings of total turning (theta1 - theta0) + 2 pi n
+/// that turn less than a full turn, by Newton on the length and the shape from several starts. First the necessary
+/// conditions of monotone curvature are checked: equal end curvatures need a common circle,
+/// and by the Tait-Kneser theorem the osculating circles at the ends of an arc without
+/// inflection are nested, and those of an arc with one inflection lie on the two sides of
+/// its inflection tangent, so they are disjoint.
+SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1);
+
+}  // namespace fairsplines::detail
