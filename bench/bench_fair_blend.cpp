@@ -73,15 +73,20 @@ struct Occt {
   double time = 0.0;
 };
 
-Occt minimalVariation(const Local& l, double angle2Sign) {
+Occt minimalVariation(const Local& l, double angle2Sign, bool g2 = false, double k0 = 0.0, double k1 = 0.0,
+                      double curvatureSign = 1.0) {
   Occt out;
   const auto t0 = Clock::now();
   try {
     FairCurve_MinimalVariation mvc(gp_Pnt2d(0, 0), gp_Pnt2d(l.r, 0), 0.02 * l.r);
-    mvc.SetConstraintOrder1(1);
-    mvc.SetConstraintOrder2(1);
+    mvc.SetConstraintOrder1(g2 ? 2 : 1);
+    mvc.SetConstraintOrder2(g2 ? 2 : 1);
     mvc.SetAngle1(l.theta0);
     mvc.SetAngle2(angle2Sign * l.theta1);
+    if (g2) {
+      mvc.SetCurvature1(curvatureSign * k0);
+      mvc.SetCurvature2(curvatureSign * k1);
+    }
     FairCurve_AnalysisCode code;
     out.computed = mvc.Compute(code, 50, 1e-3) && code == FairCurve_OK;
     out.time = seconds(t0);
@@ -95,6 +100,17 @@ Occt minimalVariation(const Local& l, double angle2Sign) {
     const double turn1 = std::remainder(angleOf(db) - l.theta1, 2 * test::kPi);
     out.matches = a.Distance(gp_Pnt2d(0, 0)) < 1e-7 * l.r && b.Distance(gp_Pnt2d(l.r, 0)) < 1e-7 * l.r &&
                   std::abs(turn0) < 1e-6 && std::abs(turn1) < 1e-6;
+    if (g2 && out.matches) {
+      const auto kappaAt = [&](double u) {
+        gp_Pnt2d p;
+        gp_Vec2d d1, d2;
+        c->D2(u, p, d1, d2);
+        return (d1.X() * d2.Y() - d1.Y() * d2.X()) / std::pow(d1.Magnitude(), 3);
+      };
+      const double scale = std::max({std::abs(k0), std::abs(k1), 1.0 / l.r});
+      out.matches = std::abs(kappaAt(c->FirstParameter()) - k0) < 1e-6 * scale &&
+                    std::abs(kappaAt(c->LastParameter()) - k1) < 1e-6 * scale;
+    }
     if (out.matches) out.monotone = certifyMonotoneCurvature(toKernel(c)).monotone;
   } catch (const Standard_Failure&) {
     out.time = seconds(t0);
@@ -126,6 +142,38 @@ int bezierExtrema(const Local& l) {
     sign = s;
   }
   (void)prev;
+  return changes;
+}
+
+// Curvature extrema of the quintic Bezier with the ends' first and second derivatives
+// (speed r, curvatures k0, k1): sign changes of kappa' over 4000 samples.
+int quinticExtrema(const Local& l, double k0, double k1) {
+  const Vector2d T0(std::cos(l.theta0), std::sin(l.theta0)), T1(std::cos(l.theta1), std::sin(l.theta1));
+  const Vector2d N0(-T0.y(), T0.x()), N1(-T1.y(), T1.x());
+  const Vector2d D0 = l.r * T0, D1 = l.r * T1, S0 = l.r * l.r * k0 * N0, S1 = l.r * l.r * k1 * N1;
+  const Vector2d P[6] = {Vector2d(0, 0), D0 / 5.0, 2.0 * D0 / 5.0 + S0 / 20.0,
+                         Vector2d(l.r, 0) - 2.0 * D1 / 5.0 + S1 / 20.0, Vector2d(l.r, 0) - D1 / 5.0, Vector2d(l.r, 0)};
+  auto kappa = [&](double t) {
+    Vector2d d1 = Vector2d::Zero(), d2 = Vector2d::Zero();
+    const double b4[5] = {std::pow(1 - t, 4), 4 * t * std::pow(1 - t, 3), 6 * t * t * (1 - t) * (1 - t),
+                          4 * std::pow(t, 3) * (1 - t), std::pow(t, 4)};
+    const double b3[4] = {std::pow(1 - t, 3), 3 * t * (1 - t) * (1 - t), 3 * t * t * (1 - t), std::pow(t, 3)};
+    for (int i = 0; i < 5; ++i) d1 += 5.0 * b4[i] * (P[i + 1] - P[i]);
+    for (int i = 0; i < 4; ++i) d2 += 20.0 * b3[i] * (P[i + 2] - 2.0 * P[i + 1] + P[i]);
+    return (d1.x() * d2.y() - d1.y() * d2.x()) / std::pow(d1.norm(), 3);
+  };
+  const int n = 4000;
+  std::vector<double> k(n + 1);
+  double scale = 0.0;
+  for (int i = 0; i <= n; ++i) k[i] = kappa(static_cast<double>(i) / n), scale = std::max(scale, std::abs(k[i]));
+  int changes = 0, sign = 0;
+  for (int i = 0; i < n; ++i) {
+    const double d = k[i + 1] - k[i];
+    if (std::abs(d) <= 1e-12 * scale) continue;
+    const int s = d > 0 ? 1 : -1;
+    if (sign != 0 && s != sign) ++changes;
+    sign = s;
+  }
   return changes;
 }
 
@@ -192,6 +240,48 @@ int main() {
               1e3 * quantile(paperTimes, 0.99), paperAlsoOurs);
   std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n",
               "Bezier matching the end tangents (legs r/3)", bezierMonotone / 10.0, bezierTotal / 1000.0, bezierMax);
-  std::printf("median ratio OCCT / fairBlend: %.1fx\n", quantile(occtTimes, 0.5) / quantile(ours, 0.5));
+  std::printf("median ratio OCCT / fairBlend: %.1fx\n\n", quantile(occtTimes, 0.5) / quantile(ours, 0.5));
+
+  // G2: the same arcs with their end curvatures (chord frame: curvatures times r).
+  // OCCT's sign for curvatures: the one that reproduces a circle arc's.
+  double curvatureSign = 1.0;
+  {
+    const Local arc{1.0, 0.5, -0.5};
+    const double k = -2.0 * std::sin(0.5);  // the arc through both ends with those tangents
+    if (!minimalVariation(arc, angle2Sign, true, k, k, 1.0).matches &&
+        minimalVariation(arc, angle2Sign, true, k, k, -1.0).matches)
+      curvatureSign = -1.0;
+  }
+  std::vector<double> ours2, occt2;
+  int solved2 = 0, occt2Computed = 0, occt2Matching = 0, occt2Monotone = 0, quinticMonotone = 0, quinticMax = 0;
+  long quinticTotal = 0;
+  for (const test::Arc& a : arcs) {
+    BlendEnds e = a.ends;
+    e.k0 = a.kappa0, e.k1 = a.kappa1;
+    double best = 1e300;
+    FairBlend b;
+    for (int r = 0; r < 3; ++r) {
+      const auto t0 = Clock::now();
+      b = fairBlend(e);
+      best = std::min(best, seconds(t0));
+    }
+    ours2.push_back(best);
+    solved2 += b.monotone;
+    const Local l = localEnds(a.ends);
+    const Occt o = minimalVariation(l, angle2Sign, true, a.kappa0, a.kappa1, curvatureSign);
+    occt2.push_back(o.time);
+    occt2Computed += o.computed, occt2Matching += o.matches, occt2Monotone += o.monotone;
+    const int extrema = quinticExtrema(l, a.kappa0, a.kappa1);
+    quinticMonotone += extrema == 0, quinticTotal += extrema, quinticMax = std::max(quinticMax, extrema);
+  }
+  std::printf("Fair G2 blends: the same arcs with their end curvatures\n");
+  std::printf("%-44s %9s %10s %10s\n", "method", "monotone", "median", "p99");
+  std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms\n", "fairBlend (spiral, certified C2 cubic)", solved2 / 10.0,
+              1e3 * quantile(ours2, 0.5), 1e3 * quantile(ours2, 0.99));
+  std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (computed %.1f%%, meets the ends %.1f%%; curvature sign %+g)\n",
+              "OCCT FairCurve_MinimalVariation (G2)", occt2Monotone / 10.0, 1e3 * quantile(occt2, 0.5),
+              1e3 * quantile(occt2, 0.99), occt2Computed / 10.0, occt2Matching / 10.0, curvatureSign);
+  std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n",
+              "quintic Bezier matching the end 2-jets", quinticMonotone / 10.0, quinticTotal / 1000.0, quinticMax);
   return 0;
 }

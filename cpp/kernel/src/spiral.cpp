@@ -349,23 +349,29 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   }
   out.reason = kneserReason(theta0, k0, theta1, k1);
 
-  // Starts: the length at which a profile of shape a (b = 0) has the turning, the clothoid
-  // (a = 0) first. Per winding, the starts are tried until one converges to a monotone
-  // solution; of all windings' solutions the fairest is kept.
+  // Starts: the length at which a profile of shape a (b = 0) has the turning. First the
+  // clothoid (a = 0) in every winding; only where none of those is monotone, the other
+  // shapes, per winding until one converges to a monotone solution. Of all solutions found
+  // the fairest is kept.
   std::vector<Candidate> found;
-  for (int n : {0, 1, -1}) {
-    const double Theta = delta + 2.0 * kPi * n;
-    if (!(std::abs(Theta) < 2.0 * kPi)) continue;  // a blend turns less than a full turn
-    for (double aStart : {0.0, 0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
-      const double mean = k0 + (k1 - k0) * (0.5 + aStart / 6.0);
-      const double L = Theta / mean;
-      if (!(L > 1.0 && L < 1e4)) continue;  // longer than the chord, and not absurdly long
-      Spiral s;
-      s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
-      const Candidate c = newton(s, Theta);
-      if (!c.converged) continue;
-      found.push_back(c);
-      if (c.spiral.minSlope() >= kMinSlope) break;
+  auto tryStart = [&](double Theta, double aStart) {
+    if (!(std::abs(Theta) < 2.0 * kPi)) return false;  // a blend turns less than a full turn
+    const double L = Theta / (k0 + (k1 - k0) * (0.5 + aStart / 6.0));
+    if (!(L > 1.0 && L < 1e4)) return false;  // longer than the chord, and not absurdly long
+    Spiral s;
+    s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
+    const Candidate c = newton(s, Theta);
+    if (!c.converged) return false;
+    found.push_back(c);
+    return c.spiral.minSlope() >= kMinSlope;
+  };
+  bool any = false;
+  for (int n : {0, 1, -1}) any = tryStart(delta + 2.0 * kPi * n, 0.0) || any;
+  if (!any) {
+    for (int n : {0, 1, -1}) {
+      for (double aStart : {0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
+        if (tryStart(delta + 2.0 * kPi * n, aStart)) break;
+      }
     }
   }
   for (const Candidate& c : found) {
