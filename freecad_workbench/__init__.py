@@ -38,7 +38,6 @@ from .analysis import (  # noqa: E402
     max_distance,
 )
 from .monotone import (  # noqa: E402
-    monotone_curvature_spline,
     monotone_curvature_solution,
     monotone_curvature_design,
     monotone_end_conditions,
@@ -47,7 +46,7 @@ from .monotone import (  # noqa: E402
     curvature_variation,
     derivative_polygons,
 )
-from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution  # noqa: E402
+from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution, monotone_curvature_spline  # noqa: E402
 
 __all__ = [
     "InputError",

@@ -3,7 +3,7 @@ monotone, proved by the exact certificate (check_monotone_curvature), with as ma
 the ends need.
 
     import freecad_workbench as fw
-    curve, report = fw.fair_blend(line.toShape(), "end", arc.toShape(), "start", continuity="G1")
+    curve, report = fw.fair_blend(line.toShape(), "end", arc.toShape(), "start")   # G2
     report.monotone, report.spans, report.variation
 
 G1 ends (points and tangent directions) are solved for every pair of distinct points: the
@@ -11,9 +11,14 @@ blend follows the G1 Hermite clothoid of the ends (Bertolazzi & Frego 2015; the 
 less than a full turn, and of those the one whose curvature varies least), whose curvature
 is linear in arc length, as a C2 cubic spline (rational about a circle of the same turning,
 so arcs stay exact) with the clothoid's end curvatures, refined until the certificate proves
-its curvature monotone. Fairness: closeness to that clothoid; the report gives the
-scale-free variation L^3 * integral (dkappa/ds)^2 ds as well. docs/FAIR_BLENDS.md has the
-construction and the measured coverage.
+its curvature monotone. G2 ends (also the signed end curvatures) follow the fairest spiral
+whose curvature runs monotonically from one end curvature to the other (a cubic of arc
+length, else a clothoid spline); ends that admit none are named (equal curvatures off a
+common circle, osculating circles not nested: Tait-Kneser) and still get the fairest curve
+found, marked not monotone. Fairness: closeness to the clothoid (G1) or the least
+scale-free variation L^3 * integral (dkappa/ds)^2 ds of the spiral (G2); the report gives
+that variation for the returned curve. docs/FAIR_BLENDS.md has the construction and the
+measured coverage.
 
 Curvatures are signed about the plane normal: positive turns counter-clockwise seen from
 the normal's tip (+Z for data in the XY plane).
@@ -24,11 +29,13 @@ from typing import Optional, Tuple
 import numpy as np
 
 from . import _kernel
-from .errors import InputError
+from .errors import InputError, NoMonotoneSolution
 from .kernel import as_vector, to_part
-from .monotone import MonotonicityReport, report_from_certificate
+from .monotone import METHODS as PAPER_METHODS
+from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
 
 CONTINUITIES = ("G1", "G2")
+METHODS = ("fair",) + PAPER_METHODS
 END_NAMES = ("start", "end")
 
 
@@ -70,8 +77,10 @@ def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
     the signed end curvatures k0, k1 (G2): (Part.BSplineCurve, FairBlendReport).
     normal: the plane normal the curvatures refer to (default: +Z for data in the XY plane,
     else derived from the data, which needs no sign for G1 only).
+    Never raises for ends that admit no monotone curve: the report says so (report.monotone
+    False, report.reason why) and the curve is the fairest found, still meeting the ends.
     Raises InputError on bad input: NaN, a zero tangent, coincident points, ends not in one
-    plane. Prescribed curvatures (G2) are not solved yet and raise InputError saying so."""
+    plane, only one of k0 and k1, curvatures of ends outside the XY plane without a normal."""
     result = _kernel.fair_blend(
         as_vector(p0, "p0"),
         as_vector(t0, "t0"),
@@ -189,14 +198,37 @@ def _signed_curvature(end, normal):
     return float(np.dot(np.cross(end.d1, end.d2), normal) / np.linalg.norm(end.d1) ** 3)
 
 
-def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G1"):
+def monotone_curvature_spline(p0, t0, p1, t1, k0=None, k1=None, normal=None, method="fair"):
+    """A planar cubic B-spline from p0 with direction t0 to p1 with direction t1 (and with
+    the signed curvatures k0, k1 there, G2, when given) whose curvature is monotone, proved by
+    the exact certificate. Curvatures are signed about `normal` (+Z for data in the XY plane).
+
+    method: "fair" (default) is the fair blend (fair_blend_solution): every G1 problem with
+    distinct points is solved. "paper" and "grid" are the paper's Algorithm 2 and its grid
+    search, one short cubic, G1 only: the baselines (see monotone_curvature_solution).
+    Raises NoMonotoneSolution (an InputError) with the reason when no monotone curve is found,
+    InputError on bad input."""
+    if method not in METHODS and method != "fairest":
+        raise InputError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
+    if method != "fair":
+        if k0 is not None or k1 is not None:
+            raise InputError("the paper's Algorithm 2 is G1: end curvatures need method='fair'")
+        return monotone_curvature_solution(p0, t0, p1, t1, method).curve
+    curve, report = fair_blend_solution(p0, t0, p1, t1, k0, k1, normal)
+    if not report.monotone:
+        raise NoMonotoneSolution("no monotone-curvature curve: " + report.reason)
+    return curve
+
+
+def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G2"):
     """The fair blend from edge_a's end `end_a` to edge_b's end `end_b`: it leaves edge_a
     continuing it and runs on into edge_b, matching their tangents (G1) or also their
     curvatures (G2), as OCCT evaluates the edges there. Edges: Part or Sketcher lines, arcs,
     conics, B-splines (an edge, a one-edge shape, or the geometry). end_*: "start", "end", or
     a vertex or point (the nearer end of that edge).
-    Returns (Part.BSplineCurve, FairBlendReport). Raises InputError on bad input; G2 is not
-    solved yet and raises InputError saying so."""
+    Returns (Part.BSplineCurve, FairBlendReport): where the ends admit no monotone curve the
+    curve is the fairest found (still G1 or G2 to both edges) and the report says why.
+    Raises InputError on bad input."""
     if continuity not in CONTINUITIES:
         raise InputError(f"unknown continuity {continuity!r}: use 'G1' or 'G2'")
     a = edge_end(edge_a, end_a, leaving=True, name="edge_a")

@@ -3,7 +3,7 @@ planar cubic B-spline curves with monotonic curvature for curve interpolation"),
 certificate that any planar B-spline or Bezier curve has monotone curvature.
 
     import freecad_workbench as fw
-    curve = fw.monotone_curvature_spline((0, 0), (1, 0), (1, 0.5), (0.8, 0.6))   # Algorithm 2
+    curve = fw.monotone_curvature_solution((0, 0), (1, 0), (1, 0.5), (0.8, 0.6)).curve   # Algorithm 2
     report = fw.check_monotone_curvature(curve)
     report.monotone, report.decreasing             # True True
     print(report)                                  # one line per span, with its reason
@@ -20,7 +20,11 @@ from . import _kernel
 from .errors import InputError
 from .kernel import as_points, as_vector, from_part, to_part
 
-METHODS = ("fairest", "grid")
+# The paper's Algorithm 2: "paper" solves for the analytic centre of the family's admissible
+# set (called "fairest" before fair blends existed; still accepted), "grid" is the paper's
+# grid search.
+METHODS = ("paper", "grid")
+_KERNEL_METHODS = {"paper": "fairest", "fairest": "fairest", "grid": "grid"}
 
 
 @dataclass(frozen=True)
@@ -45,20 +49,6 @@ def monotone_end_conditions(p0, t0, p1, t1):
     return EndConditions(**info)
 
 
-def monotone_curvature_spline(p0, t0, p1, t1, method="fairest"):
-    """Algorithm 2: a planar cubic B-spline (5 poles, knots 0, 1, 2 with multiplicities 4, 1, 4)
-    that starts at p0 with tangent direction t0, ends at p1 with direction t1, and has
-    monotone curvature, verified by the paper's Theorem 1 and the exact certificate.
-
-    method: "fairest" (default) returns the analytic centre of the family's admissible set,
-    the curve deepest inside the paper's Theorem 2 conditions; "grid" returns the first hit of
-    the paper's grid search (step 0.02), the baseline.
-    Raises NoMonotoneSolution (an InputError) with the reason when no curve of the family meets
-    the end conditions (or, for "grid", when the grid finds none); InputError on bad input.
-    """
-    return monotone_curvature_solution(p0, t0, p1, t1, method).curve
-
-
 @dataclass(frozen=True)
 class MonotoneSolution:
     """Algorithm 2's curve and how it was found."""
@@ -70,12 +60,22 @@ class MonotoneSolution:
     iterations: int  #: Newton iterations, or grid points tried
 
 
-def monotone_curvature_solution(p0, t0, p1, t1, method="fairest", grid_step=0.02):
-    """monotone_curvature_spline with the solver's diagnostics: a MonotoneSolution."""
-    if method not in METHODS:
-        raise InputError(f"unknown method {method!r}: use 'fairest' or 'grid'")
+def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
+    """The paper's Algorithm 2 with the solver's diagnostics: a MonotoneSolution whose curve is
+    a planar cubic B-spline (5 poles, knots 0, 1, 2 with multiplicities 4, 1, 4) from p0 with
+    direction t0 to p1 with direction t1, verified by Theorem 1 and the exact certificate.
+
+    method: "paper" (or its old name "fairest") returns the analytic centre of the family's
+    admissible set, the curve deepest inside the paper's Theorem 2 conditions; "grid" the
+    first hit of the paper's grid search (step grid_step), the baseline.
+    Raises NoMonotoneSolution (an InputError) with the reason when no curve of the family meets
+    the end conditions (or, for "grid", when the grid finds none); InputError on bad input.
+    fw.monotone_curvature_spline solves every G1 problem (see fair_blend)."""
+    if method not in _KERNEL_METHODS:
+        raise InputError(f"unknown method {method!r}: use 'paper' or 'grid'")
     curve, reversed_, boundary, margin, iterations = _kernel.monotone_spline(
-        as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"), method, float(grid_step)
+        as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"),
+        _KERNEL_METHODS[method], float(grid_step)
     )
     return MonotoneSolution(to_part(curve), bool(reversed_), bool(boundary), float(margin), int(iterations))
 

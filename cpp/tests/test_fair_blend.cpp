@@ -202,6 +202,9 @@ TEST(FairBlend, G2EndsThatAdmitNoMonotoneCurveAreNamedAndStillBlended) {
       {planarEnds({0.3, 0.0}, 0.5, -0.5, -2.0, 2.0), "overlap"},
       // A straight start along +x turning left, but the end lies below the start's tangent.
       {planarEnds({2.0, -0.3}, 0.0, 0.3, 0.0, 0.8), "crosses the tangent line"},
+      // A convex left turn of 30 degrees whose curvature grows towards p1, where the
+      // tangent meets the chord at 5 degrees, against 25 at p0.
+      {planarEnds({std::cos(0.4363), std::sin(0.4363)}, 0.0, 0.5236, 0.0, 3.0), "Vogt's theorem"},
   };
   for (const Case& c : cases) {
     const FairBlend b = fairBlend(c.ends);

@@ -6,6 +6,7 @@ from .blend_shape import BlendShape, make_blend_shape
 from .csr_fit import CsrFit, make_csr_fit
 from .design_spline import DesignSpline, make_design_spline
 from .edit_polygon import EditPolygon, make_edit_polygon, set_pole
+from .fair_blend import FairBlend, make_fair_blend
 from .monotone_blend import MonotoneBlend, make_monotone_blend
 from .monotone_design import MonotoneDesign, make_monotone_design
 from .profile_test import ProfileTest, make_profile_test
@@ -16,6 +17,7 @@ __all__ = [
     "CsrFit",
     "DesignSpline",
     "EditPolygon",
+    "FairBlend",
     "MonotoneBlend",
     "MonotoneDesign",
     "ProfileTest",
@@ -24,6 +26,7 @@ __all__ = [
     "make_csr_fit",
     "make_design_spline",
     "make_edit_polygon",
+    "make_fair_blend",
     "make_monotone_blend",
     "make_monotone_design",
     "make_profile_test",

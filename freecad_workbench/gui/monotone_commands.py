@@ -1,6 +1,7 @@
 """The monotone-curvature commands (GUI only). Each records a replayable macro line.
 
-FairSplines_MonotoneBlend    Monotone blend between two selected edges (their picked ends) or vertices
+FairSplines_MonotoneBlend    Fair blend between two selected edges (their picked ends) or vertices (the
+                             command kept its name, so toolbars people made keep it)
 FairSplines_CheckMonotone    certificate of the selected planar edges: report view + curvature plot
 FairSplines_MonotoneDesign   Algorithm 1 in a task panel: control vectors kept in their fair locations
 """
@@ -10,7 +11,7 @@ import Part
 
 from .. import monotone
 from ..errors import InputError
-from ..features.monotone_blend import element_shape, end_tangent
+from ..features.fair_blend import element_shape, end_tangent
 from ..features.monotone_design import MonotoneDesign
 from . import icon_path, plot
 from .commands import _edge_links, _links_code, selected_links
@@ -77,15 +78,17 @@ def _vector_code(v):
     return f"FreeCAD.Vector({v.x!r}, {v.y!r}, {v.z!r})"
 
 
-class MonotoneBlendCommand:
+class FairBlendCommand:
     def GetResources(self):
         return {
             "Pixmap": icon_path("FairSplines_MonotoneBlend"),
-            "MenuText": QT_TRANSLATE_NOOP("FairSplines_MonotoneBlend", "Monotone blend"),
+            "MenuText": QT_TRANSLATE_NOOP("FairSplines_MonotoneBlend", "Fair blend"),
             "ToolTip": QT_TRANSLATE_NOOP(
                 "FairSplines_MonotoneBlend",
-                "Bridge two selected edges (at the ends picked) with a cubic whose curvature is monotone.\n"
-                "Or select two vertices and set the directions in the blend's properties.",
+                "Bridge two selected edges, at the ends you clicked near, with a curve whose curvature\n"
+                "runs one way, proved exactly. Matches the edges' tangents and curvatures (G2);\n"
+                "set Continuity to G1 for tangents only. Or select two vertices and set the\n"
+                "directions in the blend's properties.",
             ),
         }
 
@@ -113,8 +116,8 @@ class MonotoneBlendCommand:
             other = shape0.Point if end0 is None else shape0.valueAt(shape0.LastParameter)
             args.append(f"end_direction={_vector_code(_vertex_direction(o1, shape1, other, False))}")
         FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.monotone_blend import make_monotone_blend")
-        FreeCADGui.doCommand(f"make_monotone_blend({', '.join(args)})")
+        FreeCADGui.doCommand("from freecad_workbench.features.fair_blend import make_fair_blend")
+        FreeCADGui.doCommand(f"make_fair_blend({', '.join(args)})")
         FreeCADGui.Selection.clearSelection()
 
 
@@ -394,7 +397,7 @@ class MonotoneDesignTaskPanel:
 
 def register():
     """Add the commands to FreeCADGui (once)."""
-    for name, command in zip(COMMANDS, (MonotoneBlendCommand(), CheckMonotoneCommand(), MonotoneDesignCommand())):
+    for name, command in zip(COMMANDS, (FairBlendCommand(), CheckMonotoneCommand(), MonotoneDesignCommand())):
         if name not in FreeCADGui.listCommands():
             FreeCADGui.addCommand(name, command)
 

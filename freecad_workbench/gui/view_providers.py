@@ -5,8 +5,9 @@ from . import icon_path
 
 class StatusIconViewProvider(StatelessProxy):
     """Tree icon of a feature with a Status property: its icon (ICON, named after its
-    command), or the red-marked ICON + "Error" while Status holds an error (the message is in
-    the Status property and the report view)."""
+    command), the amber-marked ICON + "Warning" while Status begins with "warning:" (a shape,
+    but short of what was asked), or the red-marked ICON + "Error" while Status holds an
+    error (the message is in the Status property and the report view)."""
 
     ICON = "FairSplines"
 
@@ -18,7 +19,10 @@ class StatusIconViewProvider(StatelessProxy):
 
     def getIcon(self):
         obj = getattr(self, "Object", None)
-        if obj is not None and getattr(obj, "Status", "ok") != "ok":
+        status = getattr(obj, "Status", "ok") if obj is not None else "ok"
+        if status.startswith("warning:"):
+            return icon_path(self.ICON + "Warning")
+        if status != "ok":
             return icon_path(self.ICON + "Error")
         return icon_path(self.ICON)
 
@@ -34,8 +38,11 @@ class ViewProviderCsrFit(StatusIconViewProvider):
     ICON = "FairSplines_CsrFit"
 
 
-class ViewProviderMonotoneBlend(StatusIconViewProvider):
-    ICON = "FairSplines_MonotoneBlend"
+class ViewProviderFairBlend(StatusIconViewProvider):
+    ICON = "FairSplines_MonotoneBlend"  # the command kept its name: toolbars people made keep it
+
+
+ViewProviderMonotoneBlend = ViewProviderFairBlend  # the name documents before fair blends store
 
 
 class ViewProviderMonotoneDesign(StatusIconViewProvider):

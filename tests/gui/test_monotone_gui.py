@@ -2,6 +2,7 @@
 edges and from vertices, Check curvature monotonicity (report view + plot), the Monotone design
 task panel keeping every difference in its fair location, and screenshots in
 out/test-artifacts/."""
+import math
 import os
 
 import numpy as np
@@ -84,7 +85,7 @@ def test_commands_have_a_toolbar_a_submenu_and_their_own_icons():
 
     FreeCADGui.activateWorkbench("FairSplinesWorkbench")
     assert FreeCADGui.activeWorkbench().getToolbarItems()["FairSplines monotone"] == list(COMMANDS)
-    classes = (commands().MonotoneBlendCommand, commands().CheckMonotoneCommand,
+    classes = (commands().FairBlendCommand, commands().CheckMonotoneCommand,
                commands().MonotoneDesignCommand)
     for name, cls in zip(COMMANDS, classes):
         assert name in FreeCADGui.listCommands()
@@ -92,7 +93,7 @@ def test_commands_have_a_toolbar_a_submenu_and_their_own_icons():
         assert resources["Pixmap"] == icon_path(name) and os.path.isfile(resources["Pixmap"])
         assert QtSvg.QSvgRenderer(resources["Pixmap"]).isValid()
         assert resources["MenuText"] and resources["ToolTip"]
-    for error_icon in ("FairSplines_MonotoneBlendError", "FairSplines_MonotoneDesignError"):
+    for error_icon in ("FairSplines_MonotoneBlendError", "FairSplines_MonotoneBlendWarning", "FairSplines_MonotoneDesignError"):
         assert QtSvg.QSvgRenderer(icon_path(error_icon)).isValid()
 
 
@@ -111,13 +112,23 @@ def test_blend_command_bridges_the_picked_ends_of_two_edges(scene, monkeypatch):
     before = {o.Name for o in doc.Objects}
     run("FairSplines_MonotoneBlend")
     blend = new_object(doc, before)
-    assert (blend.Status, blend.StartEnd, blend.EndEnd) == ("ok", "last", "first")
-    expected = fw.monotone_curvature_spline(V(0, 0, 0), V(1, 0, 0), V(30, 15, 0), V(8, 6, 0))
+    assert (blend.StartEnd, blend.EndEnd, blend.Continuity, blend.Method) == ("last", "first", "G2", "fair")
+    # G2 between two lines: curvature 0 at both ends, so only a straight line would have
+    # monotone curvature. The blend is still there, marked with a warning.
+    assert blend.Status.startswith("warning:") and "end curvatures are equal" in blend.Status
+    assert blend.ViewObject.Proxy.getIcon() == icon_path("FairSplines_MonotoneBlendWarning")
+    expected, _ = fw.fair_blend_solution(V(0, 0, 0), V(1, 0, 0), V(30, 15, 0), V(8, 6, 0), 0.0, 0.0, (0, 0, 1))
     np.testing.assert_array_equal(poles(blend), np.array([tuple(p) for p in expected.getPoles()]))
-    from freecad_workbench.gui.view_providers import ViewProviderMonotoneBlend
+    from freecad_workbench.gui.view_providers import ViewProviderFairBlend
 
-    assert isinstance(blend.ViewObject.Proxy, ViewProviderMonotoneBlend)
-    assert doc.UndoNames[0] == "Create monotone blend"
+    assert isinstance(blend.ViewObject.Proxy, ViewProviderFairBlend)
+    assert doc.UndoNames[0] == "Create fair blend"
+    blend.Continuity = "G1"  # tangents only: monotone, and the warning goes
+    doc.recompute()
+    assert blend.Status == "ok" and fw.check_monotone_curvature(blend.Shape.Edges[0]).monotone
+    assert blend.ViewObject.Proxy.getIcon() == icon_path("FairSplines_MonotoneBlend")
+    blend.Continuity = "G2"
+    doc.recompute()
     # The recorded macro replays to the same blend.
     doc.removeObject(blend.Name)
     namespace = {}
@@ -142,11 +153,14 @@ def test_blend_command_on_vertices_continues_their_edges(scene):
     before = {o.Name for o in doc.Objects}
     run("FairSplines_MonotoneBlend")
     blend = new_object(doc, before)
+    blend.Continuity = "G1"  # vertices carry no curvature of their own (StartCurvature: 0)
+    doc.recompute()
     assert blend.Status == "ok", blend.Status
     assert blend.StartDirection.normalize().isEqual(V(1, 0, 0), 1e-12)
     assert blend.EndDirection.normalize().isEqual(V(0.8, 0.6, 0), 1e-12)
     curve = blend.Shape.Edges[0].Curve
-    assert curve.value(0.0).isEqual(V(0, 0, 0), 1e-12) and curve.value(2.0).isEqual(V(30, 15, 0), 1e-12)
+    assert curve.value(curve.FirstParameter).isEqual(V(0, 0, 0), 1e-12)
+    assert curve.value(curve.LastParameter).isEqual(V(30, 15, 0), 1e-12)
 
 
 def test_failed_blend_shows_the_error_icon_and_keeps_its_shape(scene):
@@ -311,3 +325,38 @@ def test_screenshot_of_a_blend_with_its_comb(scene, artifacts):
     lines = _pixels_near(image, (51, 51, 51), 25)
     teeth = _pixels_near(image, tuple(int(255 * c) for c in comb.TOOTH_COLOR))
     assert curve > 500 and lines > 300 and teeth > 1000, (curve, lines, teeth)
+
+
+def test_screenshot_of_a_g2_fair_blend_with_its_comb(doc, artifacts):
+    """A line into a circle arc, G2: the blend's comb grows from nothing at the line to the
+    arc's own teeth, with no wiggle between (whole main window, default layout)."""
+    import FreeCADGui
+    import Part
+
+    from freecad_workbench.features.fair_blend import make_fair_blend
+
+    lead = doc.addObject("Part::Feature", "Lead")
+    lead.Shape = Part.LineSegment(V(-20, 0, 0), V(0, 0, 0)).toShape()
+    arc = doc.addObject("Part::Feature", "Arc")
+    arc.Shape = Part.ArcOfCircle(Part.Circle(V(30, 25, 0), V(0, 0, 1), 10), math.radians(-60), math.radians(60)).toShape()
+    doc.recompute()
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"))
+    assert blend.Status == "ok", blend.Status
+    assert blend.Curvature.startswith("monotone: the curvature increases from 0")
+    for obj in (lead, arc):
+        obj.ViewObject.LineWidth = 3
+        obj.ViewObject.LineColor = (0.2, 0.2, 0.2)
+    blend.ViewObject.LineWidth = 4
+    blend.ViewObject.LineColor = (0.85, 0.1, 0.1)
+    comb.show(blend, "Edge1")
+    comb.show(arc, "Edge1")
+    view = FreeCADGui.getDocument(doc.Name).ActiveView
+    view.viewTop()
+    view.fitAll()
+    FreeCADGui.updateGui()
+    path = os.path.join(artifacts, "fair_blend_g2_window.png")
+    FreeCADGui.getMainWindow().grab().save(path)
+    assert os.path.getsize(path) > 20000
+    view_path = os.path.join(artifacts, "fair_blend_g2_with_comb.png")
+    view.saveImage(view_path, 1000, 600, "White")
+    assert os.path.getsize(view_path) > 5000

@@ -64,6 +64,31 @@ PAIRS = [
 ]
 
 
+def edge_curvature(edge, end, normal, leaving):
+    """Signed curvature of the edge at its end, traversed the way the blend runs."""
+    u = edge.FirstParameter if end == "start" else edge.LastParameter
+    d1, d2 = np.array(edge.derivative1At(u)), np.array(edge.derivative2At(u))
+    forward = (end == "end") == leaving
+    return (1.0 if forward else -1.0) * np.dot(np.cross(d1, d2), normal) / np.linalg.norm(d1) ** 3
+
+
+@pytest.mark.parametrize("a, end_a, b, end_b", PAIRS)
+def test_g2_blend_between_sketch_edges_matches_their_curvatures(a, end_a, b, end_b):
+    edges = sketch_edges()
+    curve, report = fw.fair_blend(edges[a], end_a, edges[b], end_b)  # G2 is the default
+    assert report.continuity == "G2"
+    assert_joins(curve, edges[a], end_a, leaving=True)
+    assert_joins(curve, edges[b], end_b, leaving=False)
+    normal = np.array(report.normal)
+    k = signed_curvatures(curve, normal, n=2)
+    ka, kb = edge_curvature(edges[a], end_a, normal, True), edge_curvature(edges[b], end_b, normal, False)
+    scale = max(abs(ka), abs(kb), 1e-3)
+    assert k[0] == pytest.approx(ka, abs=1e-9 * scale)
+    assert k[-1] == pytest.approx(kb, abs=1e-9 * scale)
+    # Monotone or not, the report agrees with dense sampling.
+    assert report.monotone == monotone_by_sampling(curve, normal), report.reason
+
+
 @pytest.mark.parametrize("a, end_a, b, end_b", PAIRS)
 def test_g1_blend_between_sketch_edges_is_tangent_to_both_and_certified_monotone(a, end_a, b, end_b):
     edges = sketch_edges()
@@ -111,7 +136,7 @@ def test_a_3d_plane_and_a_mirror_image_are_solved_alike():
 @pytest.mark.parametrize(
     "args, message",
     [
-        (((0, 0, 0), (1, 0, 0), (0, 0, 0), (1, 0, 0)), "end points coincide"),
+        (((0, 0, 0), (1, 0, 0), (0, 0, 0), (1, 0, 0)), "p0 and p1 coincide"),
         (((0, 0, 0), (0, 0, 0), (1, 0, 0), (1, 0, 0)), "start tangent t0 is zero"),
         (((0, 0, 0), (1, 0, 0), (1, 1, 0), (math.nan, 0, 0)), "not finite"),
         (((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 0, 1)), "leaves the blend's plane"),
@@ -130,6 +155,53 @@ def test_unknown_continuity_and_end_names_are_refused():
         fw.fair_blend(edges["line"], "middle", edges["arc"], "start", continuity="G1")
 
 
-def test_prescribed_curvatures_say_g2_is_not_solved_yet():
-    with pytest.raises(fw.InputError, match="G2"):
-        fw.fair_blend_solution((0, 0, 0), (1, 0, 0), (2, 1, 0), (0, 1, 0), k0=0.1, k1=0.5)
+
+
+def test_the_default_solver_solves_every_end_the_papers_algorithm_solves():
+    from tests.kernel.test_monotone import random_ends
+
+    rng = np.random.default_rng(2026)
+    for k, (p0, t0, p1, t1, _) in enumerate(random_ends(rng, 200)):
+        paper = fw.monotone_curvature_spline(V(*p0), V(*t0), V(*p1), V(*t1), method="paper")
+        fair = fw.monotone_curvature_spline(V(*p0), V(*t0), V(*p1), V(*t1))
+        assert fw.check_monotone_curvature(paper).monotone and fw.check_monotone_curvature(fair).monotone, k
+        assert fair.value(fair.FirstParameter).distanceToPoint(V(*p0)) <= 1e-12 * np.linalg.norm(p1 - p0) + 1e-15
+
+
+def test_g2_ends_without_a_monotone_curve_raise_from_the_spline_and_report_from_the_blend():
+    # A straight start along +x turning left, but the end lies below the start's tangent.
+    args = ((0, 0, 0), (1, 0, 0), (2, -0.3, 0), (math.cos(0.3), math.sin(0.3), 0))
+    with pytest.raises(fw.NoMonotoneSolution, match="crosses the tangent line"):
+        fw.monotone_curvature_spline(*args, k0=0.0, k1=0.8)
+    curve, report = fw.fair_blend_solution(*args, k0=0.0, k1=0.8)
+    assert not report.monotone and "Tait-Kneser" in report.reason
+    assert curve.curvature(curve.LastParameter) == pytest.approx(0.8, rel=1e-9)
+
+
+def test_g2_ends_of_a_clothoid_give_that_clothoid_s_curvature_monotonically():
+    # The clothoid kappa(s) = 0.2 + 2.3 s over s in [0, 1], integrated here (Simpson).
+    s = np.linspace(0.0, 1.0, 20001)
+    theta = 0.2 * s + 1.15 * s**2
+    w = np.ones_like(s)
+    w[1:-1:2], w[2:-1:2] = 4.0, 2.0
+    end = (np.sum(w * np.cos(theta)), np.sum(w * np.sin(theta)), 0.0)
+    end = tuple(c * (s[1] - s[0]) / 3.0 for c in end)
+    t1 = (math.cos(theta[-1]), math.sin(theta[-1]), 0.0)
+    curve = fw.monotone_curvature_spline((0, 0, 0), (1, 0, 0), end, t1, k0=0.2, k1=2.5)
+    k = signed_curvatures(curve, np.array([0.0, 0.0, 1.0]))
+    assert k[0] == pytest.approx(0.2, rel=1e-9) and k[-1] == pytest.approx(2.5, rel=1e-9)
+    assert np.all(np.diff(k) >= -1e-9 * np.max(np.abs(k)))
+    # It follows the clothoid: the curvature is linear in arc length, to the spline's accuracy.
+    points = np.array([tuple(curve.value(u)) for u in np.linspace(curve.FirstParameter, curve.LastParameter, 2001)])
+    arc = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(points, axis=0), axis=1))))
+    assert arc[-1] == pytest.approx(1.0, rel=1e-4)
+    u = np.linspace(curve.FirstParameter, curve.LastParameter, 2001)
+    kk = np.array([np.cross(np.array(curve.getD2(x)[1]), np.array(curve.getD2(x)[2]))[2] / np.linalg.norm(np.array(curve.getD2(x)[1])) ** 3 for x in u])
+    assert np.max(np.abs(kk - (0.2 + 2.3 * arc))) < 0.05 * 2.5  # 0.028 measured: the first certified spline
+
+
+def test_the_papers_methods_are_g1_only():
+    with pytest.raises(fw.InputError, match="Algorithm 2 is G1"):
+        fw.monotone_curvature_spline((0, 0), (1, 0), (2, 1), (0, 1), k0=0.2, k1=2.5, method="paper")
+    with pytest.raises(fw.InputError, match="both end curvatures"):
+        fw.fair_blend_solution((0, 0), (1, 0), (2, 1), (0, 1), k0=0.2)

@@ -70,7 +70,7 @@ def direction(values, rel_tol=1e-9):
 def test_thousand_random_admissible_ends_give_monotone_interpolants():
     rng = np.random.default_rng(2026)
     for k, (p0, t0, p1, t1, increasing) in enumerate(random_ends(rng, 1000)):
-        curve = fw.monotone_curvature_spline(V(*p0), V(*t0), V(*p1), V(*t1))
+        curve = fw.monotone_curvature_spline(V(*p0), V(*t0), V(*p1), V(*t1), method="paper")
         assert isinstance(curve, Part.BSplineCurve) and curve.Degree == 3
         size = np.linalg.norm(p1 - p0)
         first, last = curve.FirstParameter, curve.LastParameter
@@ -125,7 +125,7 @@ def test_fairest_curves_lie_strictly_inside_the_family():
 )
 def test_inadmissible_ends_raise_no_monotone_solution_saying_why(p1, t1, reason):
     with pytest.raises(fw.NoMonotoneSolution, match=reason):
-        fw.monotone_curvature_spline((0, 0), (1, 0), p1, t1)
+        fw.monotone_curvature_spline((0, 0), (1, 0), p1, t1, method="paper")
     assert not fw.monotone_end_conditions((0, 0), (1, 0), p1, t1).admissible
 
 
@@ -133,7 +133,7 @@ def test_random_inadmissible_ends_raise_and_the_grid_finds_nothing_either():
     rng = np.random.default_rng(4)
     for p0, t0, p1, t1, _ in random_ends(rng, 60, admissible=False):
         with pytest.raises(fw.NoMonotoneSolution, match="too central"):
-            fw.monotone_curvature_spline(p0, t0, p1, t1)
+            fw.monotone_curvature_spline(p0, t0, p1, t1, method="paper")
         with pytest.raises(fw.NoMonotoneSolution):
             fw.monotone_curvature_spline(p0, t0, p1, t1, method="grid")
 
@@ -150,7 +150,7 @@ def test_the_grid_agrees_on_feasibility_wherever_it_finds_a_curve():
         except fw.NoMonotoneSolution:
             grid = None
         try:
-            fairest = fw.monotone_curvature_spline((0, 0), (1, 0), p1, t1)
+            fairest = fw.monotone_curvature_spline((0, 0), (1, 0), p1, t1, method="paper")
         except fw.NoMonotoneSolution:
             fairest = None
         if grid is not None:
@@ -164,7 +164,7 @@ def test_the_grid_agrees_on_feasibility_wherever_it_finds_a_curve():
 
 
 def test_the_straight_segment_and_the_parabola_limit():
-    line = fw.monotone_curvature_spline((1, 1, 1), (1, 1, 1), (3, 3, 3), (2, 2, 2))
+    line = fw.monotone_curvature_spline((1, 1, 1), (1, 1, 1), (3, 3, 3), (2, 2, 2), method="paper")
     assert np.allclose([line.curvature(u) for u in np.linspace(0, 2, 9)], 0.0, atol=1e-14)
     # a = b cos(turn): only the parabola y = x^2 from its vertex remains.
     parabola = fw.monotone_curvature_solution((0, 0), (1, 0), (1, 1), (1, 2))
@@ -329,7 +329,7 @@ def test_design_bad_input_raises_input_error(first, diffs, knots, message):
 
 
 def test_derivative_polygons_are_eqs_3_and_5():
-    curve = fw.monotone_curvature_spline((0, 0), (1, 0), (1, 0.5), (0.8, 0.6))
+    curve = fw.monotone_curvature_spline((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="paper")
     first, second = fw.derivative_polygons(curve)
     assert first.shape == (4, 3) and second.shape == (3, 3)
     # The hodograph's end points are OCCT's end derivatives; P'' is linear between C^2 points.
@@ -340,9 +340,9 @@ def test_derivative_polygons_are_eqs_3_and_5():
 
 
 def test_curvature_variation_vanishes_for_circles_only():
-    fairest = fw.monotone_curvature_spline((0, 0), (1, 0), (1, 0.5), (0.8, 0.6))
+    fairest = fw.monotone_curvature_spline((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="paper")
     assert fw.curvature_variation(fairest) > 1.0
     assert fw.curvature_variation(Part.makeCircle(1.0)) == pytest.approx(0.0, abs=1e-15)
     # Scale-free: the same curve 1000 times larger.
-    big = fw.monotone_curvature_spline((0, 0), (1000, 0), (1000, 500), (0.8, 0.6))
+    big = fw.monotone_curvature_spline((0, 0), (1000, 0), (1000, 500), (0.8, 0.6), method="paper")
     assert fw.curvature_variation(big) == pytest.approx(fw.curvature_variation(fairest), rel=1e-9)

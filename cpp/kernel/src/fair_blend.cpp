@@ -50,7 +50,7 @@ Plane planeOf(const BlendEnds& e, bool curvaturesGiven) {
   requireFinite(e.normal, "the normal");
   const Vec3 d = e.p1 - e.p0;
   const double scale = std::max(e.p0.cwiseAbs().maxCoeff(), e.p1.cwiseAbs().maxCoeff());
-  if (!(d.norm() > 1e-14 * std::max(scale, 1e-300))) throw InputError("the end points coincide: a blend needs two points");
+  if (!(d.norm() > 1e-14 * std::max(scale, 1e-300))) throw InputError("the end points p0 and p1 coincide: a blend needs two points");
   if (!(e.t0.norm() > 0.0)) throw InputError("the start tangent t0 is zero");
   if (!(e.t1.norm() > 0.0)) throw InputError("the end tangent t1 is zero");
   const Vec3 u = d.normalized(), a = e.t0.normalized(), b = e.t1.normalized();

@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 #include <Eigen/Dense>
@@ -139,7 +137,25 @@ double ClothoidSpline::variation() const {
 
 namespace {
 
-/// Necessary conditions of monotone curvature from the Tait-Kneser theorem; "" when they hold.
+/// Vogt's theorem: on a convex arc (one side of its chord, turning less than pi) whose
+/// curvature grows from A to B, the tangent meets the chord at B at a larger angle than at A.
+/// In the chord frame the arc turning to side s (+1 left, -1 right) has alpha = -s theta0 at
+/// p0 and beta = s theta1 at p1; "" when the theorem does not apply or holds.
+std::string vogtReason(double theta0, double k0, double theta1, double k1) {
+  const double s = (k0 + k1) > 0.0 ? 1.0 : -1.0;
+  const double alpha = -s * theta0, beta = s * theta1;
+  if (!(alpha > 0.0 && beta > 0.0 && alpha + beta < kPi)) return "";
+  const bool growsToEnd = std::abs(k1) > std::abs(k0);
+  if (growsToEnd ? beta > alpha : alpha > beta) return "";
+  const double degrees = 180.0 / kPi;
+  return std::string("the curvature grows towards the ") + (growsToEnd ? "end" : "start") +
+         ", so the tangent must meet the chord at a larger angle there (Vogt's theorem), but it meets it at " +
+         num((growsToEnd ? beta : alpha) * degrees) + " degrees there and " + num((growsToEnd ? alpha : beta) * degrees) +
+         " at the other end";
+}
+
+/// Necessary conditions of monotone curvature from the Tait-Kneser and Vogt theorems; ""
+/// when they hold.
 std::string kneserReason(double theta0, double k0, double theta1, double k1) {
   const Eigen::Vector2d p0(0.0, 0.0), p1(1.0, 0.0);
   const Eigen::Vector2d n0(-std::sin(theta0), std::cos(theta0)), n1(-std::sin(theta1), std::cos(theta1));
@@ -157,7 +173,7 @@ std::string kneserReason(double theta0, double k0, double theta1, double k1) {
              num(d) + " apart) overlap: a curve whose curvature runs one way through one inflection has them on the "
              "two sides of its inflection tangent";
     }
-    return "";
+    return inflection ? "" : vogtReason(theta0, k0, theta1, k1);
   }
   if (k0 == 0.0 && k1 == 0.0) return "";  // handled as equal curvatures
   // One end straight: the other end's osculating circle lies on the side the curve turns to,
@@ -174,7 +190,7 @@ std::string kneserReason(double theta0, double k0, double theta1, double k1) {
            ": a curve whose curvature runs one way from 0 keeps its osculating circles on one side of that line "
            "(Tait-Kneser)";
   }
-  return "";
+  return vogtReason(theta0, k0, theta1, k1);
 }
 
 struct Candidate {
@@ -229,7 +245,7 @@ Candidate newton(Spiral s, double Theta) {
   return out;
 }
 
-/// Levenberg-Marquardt on (log L, z_1 .. z_{n-1}) with the node steps C_i - C_{i-1} the
+/// Levenberg-Marquardt on (log(L - 1), z_1 .. z_{n-1}) (L > 1: longer than the chord) with the node steps C_i - C_{i-1} the
 /// softmax of (0, z): monotone by construction. Residuals: the end point, the turning, and
 /// sqrt(mu) (n step_i - 1), which pulls towards the clothoid (equal steps); mu goes to 1e-12
 /// so that the ends are met to rounding. nullopt where it does not reach the ends.
@@ -237,7 +253,7 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
   const int m = n;  // parameters
   auto build = [&](const Eigen::VectorXd& x) {
     ClothoidSpline c;
-    c.theta0 = theta0, c.k0 = k0, c.k1 = k1, c.length = std::exp(x[0]);
+    c.theta0 = theta0, c.k0 = k0, c.k1 = k1, c.length = 1.0 + std::exp(x[0]);
     Eigen::VectorXd w(n);
     w[0] = 1.0;
     const double top = std::max(0.0, x.tail(n - 1).maxCoeff());
@@ -251,8 +267,8 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
   };
   auto residuals = [&](const Eigen::VectorXd& x, double mu) {
     Eigen::VectorXd r(3 + n);
-    if (!x.allFinite() || !(std::exp(x[0]) > 1.0 && std::exp(x[0]) < 1e4) || x.tail(n - 1).cwiseAbs().maxCoeff() > 40.0) {
-      r.setConstant(1e150);  // outside the sane region: longer than the chord, shorter than 1e4 chords
+    if (!x.allFinite() || !(x[0] < std::log(1e4)) || x.tail(n - 1).cwiseAbs().maxCoeff() > 40.0) {
+      r.setConstant(1e150);  // outside the sane region: shorter than 1e4 chords, sane steps
       return r;
     }
     const ClothoidSpline c = build(x);
@@ -264,7 +280,7 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
     return r;
   };
   Eigen::VectorXd x = Eigen::VectorXd::Zero(m);
-  x[0] = std::log(L0);
+  x[0] = std::log(std::max(L0 - 1.0, 1e-6));
   for (double mu : {1e-2, 1e-4, 1e-6}) {
     double lambda = 1e-3;
     Eigen::VectorXd r = residuals(x, mu);
@@ -285,7 +301,7 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
         const Eigen::VectorXd step = D.ldlt().solve(-g);
         if (!step.allFinite()) break;
         const Eigen::VectorXd y = x + step;
-        if (!(std::exp(y[0]) > 1.0) || y.tail(m - 1).cwiseAbs().maxCoeff() > 40.0) {
+        if (!(y[0] < std::log(1e4)) || y.tail(m - 1).cwiseAbs().maxCoeff() > 40.0) {
           lambda *= 4.0;
           continue;
         }
@@ -385,13 +401,21 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   if (!out.monotone) {
     // The cubic profiles do not reach these ends monotonically: clothoid splines, which do
     // wherever a piecewise-linear monotone curvature does.
+    // Starts: the G1 clothoid's length in its winding, then a nearly straight curve and
+    // two longer ones; per winding until one is monotone.
+    const Clothoid g1 = clothoidG1(Eigen::Vector2d::Zero(), theta0, Eigen::Vector2d(1.0, 0.0), theta1);
+    const double g1Turning = g1.theta(g1.length) - g1.theta0;
     for (int n : {0, 1, -1}) {
       const double Theta = delta + 2.0 * kPi * n;
       if (!(std::abs(Theta) < 2.0 * kPi)) continue;
-      const double mean = 0.5 * (k0 + k1);
-      const double L0 = (Theta / mean > 1.0 && Theta / mean < 1e4) ? Theta / mean : 1.5;
-      const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, 8);
-      if (c && c->minSlope() >= kMinSlope && (!out.spline || c->variation() < out.spline->variation())) out.spline = c;
+      std::vector<double> starts{1.02, 1.5, 3.0};
+      if (std::abs(g1Turning - Theta) < 1e-9) starts.insert(starts.begin(), g1.length);
+      for (double L0 : starts) {
+        const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, 8);
+        if (!c || c->minSlope() < kMinSlope) continue;
+        if (!out.spline || c->variation() < out.spline->variation()) out.spline = c;
+        break;
+      }
     }
   }
   if (out.monotone || out.spline) out.reason.clear();

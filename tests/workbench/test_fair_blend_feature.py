@@ -1,0 +1,175 @@
+"""The Fair blend feature, headless: G2 by default between edges (curvatures matched as OCCT
+evaluates the edges), the warning state where no monotone curve exists, following sources,
+save/reopen/recompute, and the migration of Monotone blend documents (version 1)."""
+import math
+
+import numpy as np
+import pytest
+
+import FreeCAD
+import Part
+
+import freecad_workbench as fw
+from freecad_workbench.features.fair_blend import FairBlend, make_fair_blend
+from freecad_workbench.features.monotone_blend import MonotoneBlend, make_monotone_blend
+
+V = FreeCAD.Vector
+
+
+def poles(obj):
+    return np.array([tuple(p) for p in obj.Shape.Edges[0].Curve.getPoles()])
+
+
+def signed_kappa(curve, u):
+    d1, d2 = curve.getD2(u)[1:3]
+    return d1.cross(d2).z / d1.Length**3
+
+
+@pytest.fixture
+def line_and_arc(doc):
+    """A straight lead-in ending at the origin along +x, and a circle arc (radius 10) where the
+    clothoid kappa(s) = s / 200 from the origin ends after s = 20 (turning 1 rad): a
+    monotone-curvature G2 blend exists, that clothoid (integrated here by Simpson's rule)."""
+    s = np.linspace(0.0, 20.0, 40001)
+    theta = s**2 / 400.0
+    w = np.ones_like(s)
+    w[1:-1:2], w[2:-1:2] = 4.0, 2.0
+    h = (s[1] - s[0]) / 3.0
+    end = V(h * np.sum(w * np.cos(theta)), h * np.sum(w * np.sin(theta)), 0)
+    centre = end + V(-math.sin(1.0), math.cos(1.0), 0) * 10.0
+    lead = doc.addObject("Part::Feature", "Lead")
+    lead.Shape = Part.LineSegment(V(-20, 0, 0), V(0, 0, 0)).toShape()
+    arc = doc.addObject("Part::Feature", "Arc")
+    start = 1.0 - math.pi / 2
+    arc.Shape = Part.ArcOfCircle(Part.Circle(centre, V(0, 0, 1), 10), start, start + math.radians(120)).toShape()
+    doc.recompute()
+    return lead, arc
+
+
+def test_g2_blend_of_a_line_into_an_arc_matches_both_curvatures_monotonically(doc, line_and_arc):
+    lead, arc = line_and_arc
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"))
+    assert isinstance(blend.Proxy, FairBlend) and blend.Proxy.Type == "FairBlend"
+    assert (blend.Continuity, blend.Method, blend.Status) == ("G2", "fair", "ok")
+    curve = blend.Shape.Edges[0].Curve
+    u0, u1 = curve.FirstParameter, curve.LastParameter
+    assert curve.value(u0).isEqual(V(0, 0, 0), 1e-12)
+    end = arc.Shape.Edges[0].valueAt(arc.Shape.Edges[0].FirstParameter)
+    assert curve.value(u1).distanceToPoint(end) <= 1e-12 * end.Length
+    # The edges' own curvatures, as OCCT evaluates them: 0 on the line, 1/10 on the arc.
+    assert abs(signed_kappa(curve, u0)) <= 1e-12
+    assert signed_kappa(curve, u1) == pytest.approx(0.1, rel=1e-9)
+    kappa = [signed_kappa(curve, u) for u in np.linspace(u0, u1, 2000)]
+    assert np.all(np.diff(kappa) >= -1e-9 * max(kappa))
+    assert fw.check_monotone_curvature(curve).monotone
+    assert blend.Curvature.startswith("monotone: the curvature increases")
+
+
+def test_ends_without_a_monotone_curve_show_the_fairest_with_a_warning(doc, line_and_arc):
+    lead, arc = line_and_arc
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"), end_end="first")
+    good = poles(blend)
+    # Move the arc below the lead-in's line: turning left from a straight start cannot reach it.
+    arc.Placement = FreeCAD.Placement(V(0, -40, 0), FreeCAD.Rotation())
+    doc.recompute()
+    assert blend.Status.startswith("warning: ") and "no monotone-curvature curve meets" in blend.Status
+    moved = poles(blend)  # not a stale curve: the fairest for the new ends
+    assert moved.shape != good.shape or not np.allclose(moved, good)
+    curve = blend.Shape.Edges[0].Curve
+    assert signed_kappa(curve, curve.LastParameter) == pytest.approx(0.1, rel=1e-9)
+    assert blend.Curvature.startswith("not monotone")
+    arc.Placement = FreeCAD.Placement()
+    doc.recompute()
+    assert blend.Status == "ok"
+    np.testing.assert_allclose(poles(blend), good, rtol=0, atol=1e-12)
+
+
+def test_g1_and_the_papers_method(doc, line_and_arc):
+    lead, arc = line_and_arc
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"), continuity="G1")
+    arc_edge = arc.Shape.Edges[0]
+    expected, report = fw.fair_blend_solution(
+        V(0, 0, 0), V(1, 0, 0), arc_edge.valueAt(arc_edge.FirstParameter), arc_edge.tangentAt(arc_edge.FirstParameter)
+    )
+    assert blend.Status == "ok" and report.continuity == "G1"
+    np.testing.assert_array_equal(poles(blend), np.array([tuple(p) for p in expected.getPoles()]))
+    blend.Method = "paper"  # Algorithm 2: one cubic of 5 poles, if the family has one
+    doc.recompute()
+    assert blend.Status.startswith("no monotone-curvature curve") or len(poles(blend)) == 5
+    blend.Continuity = "G2"
+    doc.recompute()
+    assert "Algorithm 2 is G1 only" in blend.Status
+
+
+def test_vertex_ends_take_their_directions_and_curvatures_from_properties(doc):
+    a = doc.addObject("Part::Vertex", "A")
+    b = doc.addObject("Part::Vertex", "B")
+    b.X, b.Y = 2.0, 1.0
+    doc.recompute()
+    blend = make_fair_blend(doc, a, b, start_direction=(1, 0, 0), end_direction=(0, 1, 0),
+                            start_curvature=0.2, end_curvature=2.0)
+    assert blend.Status == "ok", blend.Status
+    curve = blend.Shape.Edges[0].Curve
+    assert signed_kappa(curve, curve.FirstParameter) == pytest.approx(0.2, rel=1e-9)
+    assert signed_kappa(curve, curve.LastParameter) == pytest.approx(2.0, rel=1e-9)
+
+
+def test_save_close_reopen_recompute_gives_identical_poles(doc, line_and_arc, tmp_path):
+    lead, arc = line_and_arc
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"))
+    before = poles(blend)
+    path = str(tmp_path / "fair.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        blend = reopened.getObject("FairBlend")
+        assert isinstance(blend.Proxy, FairBlend) and (blend.Version, blend.Continuity) == (FairBlend.VERSION, "G2")
+        blend.touch()
+        reopened.recompute()
+        np.testing.assert_array_equal(poles(blend), before)
+        reopened.getObject("Arc").Placement = FreeCAD.Placement(V(1, 0, 0), FreeCAD.Rotation())  # links survived
+        reopened.recompute()
+        assert blend.Status == "ok" and not np.allclose(poles(blend), before)
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_monotone_blend_document_of_version_1_opens_and_recomputes_unchanged(doc, tmp_path):
+    """What the Monotone blend saved before fair blends: no Continuity, Method fairest or grid."""
+    lead = doc.addObject("Part::Feature", "Lead")
+    lead.Shape = Part.LineSegment(V(-20, 0, 0), V(0, 0, 0)).toShape()
+    out = doc.addObject("Part::Feature", "Out")
+    out.Shape = Part.LineSegment(V(30, 15, 0), V(38, 21, 0)).toShape()
+    doc.recompute()
+    old = {}
+    for method in ("fairest", "grid"):
+        blend = make_monotone_blend(doc, (lead, "Edge1"), (out, "Edge1"), method=method, name=f"Old_{method}")
+        old[method] = poles(blend)
+        for name in ("Continuity", "StartCurvature", "EndCurvature", "Method"):
+            blend.removeProperty(name)
+        blend.addProperty("App::PropertyEnumeration", "Method", "Monotone blend", "")
+        blend.Method = ["fairest", "grid"]
+        blend.Method = method
+        blend.Version = 1
+    path = str(tmp_path / "monotone_v1.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        for method, expected_method in (("fairest", "paper"), ("grid", "grid")):
+            blend = reopened.getObject(f"Old_{method}")
+            assert isinstance(blend.Proxy, MonotoneBlend)
+            assert (blend.Version, blend.Continuity, blend.Method) == (FairBlend.VERSION, "G1", expected_method)
+            blend.touch()
+            reopened.recompute()
+            assert blend.Status == "ok"
+            np.testing.assert_array_equal(poles(blend), old[method])
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+
+
+def test_factory_rejects_unknown_continuity(doc, line_and_arc):
+    lead, arc = line_and_arc
+    with pytest.raises(fw.InputError, match="continuity"):
+        make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"), continuity="G3")
