@@ -12,6 +12,7 @@ import Part
 import freecad_workbench as fw
 from freecad_workbench.features.fair_blend import FairBlend, make_fair_blend
 from freecad_workbench.features.monotone_blend import MonotoneBlend, make_monotone_blend
+from tests.scenes import line_into_arc
 
 V = FreeCAD.Vector
 
@@ -27,23 +28,7 @@ def signed_kappa(curve, u):
 
 @pytest.fixture
 def line_and_arc(doc):
-    """A straight lead-in ending at the origin along +x, and a circle arc (radius 10) where the
-    clothoid kappa(s) = s / 200 from the origin ends after s = 20 (turning 1 rad): a
-    monotone-curvature G2 blend exists, that clothoid (integrated here by Simpson's rule)."""
-    s = np.linspace(0.0, 20.0, 40001)
-    theta = s**2 / 400.0
-    w = np.ones_like(s)
-    w[1:-1:2], w[2:-1:2] = 4.0, 2.0
-    h = (s[1] - s[0]) / 3.0
-    end = V(h * np.sum(w * np.cos(theta)), h * np.sum(w * np.sin(theta)), 0)
-    centre = end + V(-math.sin(1.0), math.cos(1.0), 0) * 10.0
-    lead = doc.addObject("Part::Feature", "Lead")
-    lead.Shape = Part.LineSegment(V(-20, 0, 0), V(0, 0, 0)).toShape()
-    arc = doc.addObject("Part::Feature", "Arc")
-    start = 1.0 - math.pi / 2
-    arc.Shape = Part.ArcOfCircle(Part.Circle(centre, V(0, 0, 1), 10), start, start + math.radians(120)).toShape()
-    doc.recompute()
-    return lead, arc
+    return line_into_arc(doc)
 
 
 def test_g2_blend_of_a_line_into_an_arc_matches_both_curvatures_monotonically(doc, line_and_arc):

@@ -1,0 +1,30 @@
+"""Document scenes shared by the headless and the GUI tests."""
+import math
+
+import numpy as np
+
+import FreeCAD
+import Part
+
+V = FreeCAD.Vector
+
+
+def line_into_arc(doc):
+    """A straight lead-in ending at the origin along +x, and a circle arc (radius 10) where the
+    clothoid kappa(s) = s / 200 from the origin ends after s = 20 (turning 1 rad), continuing
+    it with curvature 1/10: a monotone-curvature G2 blend of the two exists, that clothoid
+    (integrated here by Simpson's rule). Returns (lead, arc) document objects."""
+    s = np.linspace(0.0, 20.0, 40001)
+    theta = s**2 / 400.0
+    w = np.ones_like(s)
+    w[1:-1:2], w[2:-1:2] = 4.0, 2.0
+    h = (s[1] - s[0]) / 3.0
+    end = V(h * np.sum(w * np.cos(theta)), h * np.sum(w * np.sin(theta)), 0)
+    centre = end + V(-math.sin(1.0), math.cos(1.0), 0) * 10.0
+    lead = doc.addObject("Part::Feature", "Lead")
+    lead.Shape = Part.LineSegment(V(-20, 0, 0), V(0, 0, 0)).toShape()
+    arc = doc.addObject("Part::Feature", "Arc")
+    start = 1.0 - math.pi / 2
+    arc.Shape = Part.ArcOfCircle(Part.Circle(centre, V(0, 0, 1), 10), start, start + math.radians(120)).toShape()
+    doc.recompute()
+    return lead, arc
