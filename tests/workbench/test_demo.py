@@ -13,6 +13,7 @@ import FreeCAD  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 PICTURES = ("fig2_curvature.png", "fig2_curves.png", "design_curvature.png", "monotone_curvature.png",
+            "fair_blend_curvature.png",
             "blend_patches.png", "blend_join.png")
 
 
@@ -67,6 +68,9 @@ def test_demo_summary_reports_the_figures(demo_out):
     assert int(rows["classic C2 interpolation"][0]) >= 1
     assert "shell valid: True, single surface: C2" in summary
     assert "monotone=True" in summary
+    fair = summary.split("Fair blend, G2", 1)[1].splitlines()
+    assert fair[1].strip().startswith("certificate: monotone=True, increasing=True")
+    assert fair[1].endswith("curvature extrema inside: 0") and fair[2].strip() == "end curvatures: 0 and 0.1"
 
 
 if __name__ == "__main__":
