@@ -118,8 +118,26 @@ Occt minimalVariation(const Local& l, double angle2Sign, bool g2 = false, double
   return out;
 }
 
-// Curvature extrema of the Bezier (p0, p0 + r/3 t0, p1 - r/3 t1, p1): sign changes of
-// kappa' over 4000 samples.
+// Curvature extrema of kappa(t), t in [0, 1]: sign changes of kappa' over 4000 samples
+// (steps within 1e-12 of the largest |kappa| count as flat).
+template <class Kappa>
+int kappaSignChanges(const Kappa& kappa) {
+  const int n = 4000;
+  std::vector<double> k(n + 1);
+  double scale = 0.0;
+  for (int i = 0; i <= n; ++i) k[i] = kappa(static_cast<double>(i) / n), scale = std::max(scale, std::abs(k[i]));
+  int changes = 0, sign = 0;
+  for (int i = 0; i < n; ++i) {
+    const double d = k[i + 1] - k[i];
+    if (std::abs(d) <= 1e-12 * scale) continue;
+    const int s = d > 0 ? 1 : -1;
+    if (sign != 0 && s != sign) ++changes;
+    sign = s;
+  }
+  return changes;
+}
+
+// Curvature extrema of the Bezier (p0, p0 + r/3 t0, p1 - r/3 t1, p1).
 int bezierExtrema(const Local& l) {
   const Vector2d P0(0, 0), P3(l.r, 0);
   const Vector2d P1 = P0 + l.r / 3.0 * Vector2d(std::cos(l.theta0), std::sin(l.theta0));
@@ -129,24 +147,11 @@ int bezierExtrema(const Local& l) {
     const Vector2d d2 = 6 * ((1 - t) * (P2 - 2 * P1 + P0) + t * (P3 - 2 * P2 + P1));
     return (d1.x() * d2.y() - d1.y() * d2.x()) / std::pow(d1.norm(), 3);
   };
-  const int n = 4000;
-  int changes = 0, sign = 0;
-  double prev = kappa(0.0), scale = std::abs(prev);
-  std::vector<double> k(n + 1);
-  for (int i = 0; i <= n; ++i) k[i] = kappa(static_cast<double>(i) / n), scale = std::max(scale, std::abs(k[i]));
-  for (int i = 0; i < n; ++i) {
-    const double d = k[i + 1] - k[i];
-    if (std::abs(d) <= 1e-12 * scale) continue;
-    const int s = d > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) ++changes;
-    sign = s;
-  }
-  (void)prev;
-  return changes;
+  return kappaSignChanges(kappa);
 }
 
 // Curvature extrema of the quintic Bezier with the ends' first and second derivatives
-// (speed r, curvatures k0, k1): sign changes of kappa' over 4000 samples.
+// (speed r, curvatures k0, k1).
 int quinticExtrema(const Local& l, double k0, double k1) {
   const Vector2d T0(std::cos(l.theta0), std::sin(l.theta0)), T1(std::cos(l.theta1), std::sin(l.theta1));
   const Vector2d N0(-T0.y(), T0.x()), N1(-T1.y(), T1.x());
@@ -162,19 +167,7 @@ int quinticExtrema(const Local& l, double k0, double k1) {
     for (int i = 0; i < 4; ++i) d2 += 20.0 * b3[i] * (P[i + 2] - 2.0 * P[i + 1] + P[i]);
     return (d1.x() * d2.y() - d1.y() * d2.x()) / std::pow(d1.norm(), 3);
   };
-  const int n = 4000;
-  std::vector<double> k(n + 1);
-  double scale = 0.0;
-  for (int i = 0; i <= n; ++i) k[i] = kappa(static_cast<double>(i) / n), scale = std::max(scale, std::abs(k[i]));
-  int changes = 0, sign = 0;
-  for (int i = 0; i < n; ++i) {
-    const double d = k[i + 1] - k[i];
-    if (std::abs(d) <= 1e-12 * scale) continue;
-    const int s = d > 0 ? 1 : -1;
-    if (sign != 0 && s != sign) ++changes;
-    sign = s;
-  }
-  return changes;
+  return kappaSignChanges(kappa);
 }
 
 }  // namespace

@@ -6,21 +6,11 @@
 #include <limits>
 
 namespace fairsplines::detail {
-namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// 8-point Gauss-Legendre nodes and weights on [-1, 1] (positive half).
-constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-
-// An angle in (-pi, pi].
 double normalizeAngle(double a) {
   a = std::remainder(a, 2.0 * kPi);
   return a <= -kPi ? a + 2.0 * kPi : a;
 }
-
-}  // namespace
 
 // ---------------------------------------------------------------------------------------
 // Generalized Fresnel moments (Bertolazzi & Frego, eq. (9)).
@@ -34,8 +24,8 @@ FresnelMoments fresnelMoments(double a, double b, double c) {
   for (int p = 0; p < panels; ++p) {
     const double mid = (p + 0.5) * h;
     for (int k = 0; k < 8; ++k) {
-      const double tau = mid + (k < 4 ? -0.5 : 0.5) * h * kGx[k % 4];
-      const double w = 0.5 * h * kGw[k % 4];
+      const double tau = mid + (k < 4 ? -0.5 : 0.5) * h * kGaussX[k % 4];
+      const double w = 0.5 * h * kGaussW[k % 4];
       const double psi = tau * (0.5 * a * tau + b) + c;
       const double cw = w * std::cos(psi), sw = w * std::sin(psi);
       m.X[0] += cw;

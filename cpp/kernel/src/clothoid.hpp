@@ -6,6 +6,16 @@
 
 namespace fairsplines::detail {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
+/// 8-point Gauss-Legendre on [-1, 1]: the positive nodes and their weights (the composite
+/// quadratures of the clothoid and the spirals).
+inline constexpr double kGaussX[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+inline constexpr double kGaussW[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
+
+/// An angle in (-pi, pi].
+double normalizeAngle(double a);
+
 /// The generalized Fresnel moments of the paper's eq. (9),
 ///   X_k(a, b, c) = int_0^1 tau^k cos(a tau^2 / 2 + b tau + c) dtau,
 ///   Y_k(a, b, c) = int_0^1 tau^k sin(a tau^2 / 2 + b tau + c) dtau,   k = 0, 1, 2,

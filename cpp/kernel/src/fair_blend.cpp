@@ -27,7 +27,7 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using detail::Clothoid;
-constexpr double kPi = 3.14159265358979323846;
+using detail::kPi;
 
 // ---------------------------------------------------------------------------------------
 // The plane of the blend.

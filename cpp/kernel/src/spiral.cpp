@@ -12,15 +12,6 @@
 namespace fairsplines::detail {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kGx[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-constexpr double kGw[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
-
-double normalizeAngle(double a) {
-  a = std::remainder(a, 2.0 * kPi);
-  return a <= -kPi ? a + 2.0 * kPi : a;
-}
-
 std::string num(double v) {
   std::ostringstream out;
   out.precision(4);
@@ -58,9 +49,9 @@ Eigen::Vector2d Spiral::point(double s) const {
   for (int p = 0; p < panels; ++p) {
     const double mid = (p + 0.5) * h;
     for (int k = 0; k < 8; ++k) {
-      const double x = mid + (k < 4 ? -0.5 : 0.5) * h * kGx[k % 4];
+      const double x = mid + (k < 4 ? -0.5 : 0.5) * h * kGaussX[k % 4];
       const double th = theta(x);
-      sum += (0.5 * h * kGw[k % 4]) * Eigen::Vector2d(std::cos(th), std::sin(th));
+      sum += (0.5 * h * kGaussW[k % 4]) * Eigen::Vector2d(std::cos(th), std::sin(th));
     }
   }
   return start + sum;
