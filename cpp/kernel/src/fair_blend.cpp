@@ -122,12 +122,12 @@ struct ReferenceCircle {
 };
 
 // ---------------------------------------------------------------------------------------
-// The C2 cubic following the clothoid.
+// The C2 cubic following the guide curve (the G1 clothoid, or a G2 spiral).
 
-/// End data in the normalized plane (chord from (0, 0) to (1, 0)).
 constexpr int kMaxRounds = 12;   // refinement rounds
 constexpr int kMaxSpans = 400;   // spans at the most
 
+/// End data in the normalized plane (chord from (0, 0) to (1, 0)).
 struct Ends2 {
   Vec2 p0, p1, T0, T1;  // unit tangents
   double k0, k1;

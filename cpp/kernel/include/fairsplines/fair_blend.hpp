@@ -9,8 +9,10 @@
 // curvatures, the clothoid's points at the interior knots, more spans until the
 // certificate proves its curvature monotone. The criterion it optimizes is closeness to
 // the clothoid of the same ends, the fairest monotone curve (its curvature varies at one
-// constant rate); the report gives the scale-free variation L^3 int (dkappa/ds)^2 ds too.
-// docs/FAIR_BLENDS.md has the derivation and the measured coverage.
+// constant rate). For G2 ends it follows the spiral of least scale-free variation
+// L^3 int (dkappa/ds)^2 ds whose curvature runs monotonically between the end curvatures;
+// the report gives that variation for every result. docs/FAIR_BLENDS.md has the
+// derivation, the refusals and the measured coverage.
 #pragma once
 #include <limits>
 #include <string>
