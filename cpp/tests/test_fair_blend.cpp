@@ -263,3 +263,40 @@ TEST(FairBlend, G2EndsOfOtherMonotoneCurvesAreNeverRefusedAndMostlySolved) {
   std::printf("G2 of piecewise-linear curvature curves: %d of %d solved\n", solved, count);
   EXPECT_GE(solved, count * 85 / 100);  // 261 of 300 measured
 }
+
+// Nearly straight, nearly circular and nearly degenerate ends: finite poles, exact ends, and
+// curvature certified monotone wherever the blend's size is above 1e-6 of its coordinates.
+TEST(FairBlend, NearlyStraightCircularAndDegenerateEndsStayFiniteAndMonotone) {
+  struct Case {
+    BlendEnds ends;
+    bool representable;
+  };
+  std::vector<Case> cases;
+  for (double a : {1e-6, 1e-10, 1e-13}) {  // nearly straight, S-shaped
+    BlendEnds e;
+    e.p1 = Vector3d(1, 0, 0), e.t0 = Vector3d(1, a, 0), e.t1 = Vector3d(1, -a, 0);
+    cases.push_back({e, true});
+  }
+  for (double dk : {1e-3, 1e-6, 1e-9}) {  // nearly circular: a clothoid of half a turn, kappa 3 to 3 + dk
+    const Vector2d q = clothoidPoint(0.0, 3.0, dk, 1.0);
+    BlendEnds e;
+    e.p1 = Vector3d(q.x(), q.y(), 0), e.t1 = Vector3d(std::cos(3.0 + 0.5 * dk), std::sin(3.0 + 0.5 * dk), 0);
+    cases.push_back({e, true});
+    e.k0 = 3.0, e.k1 = 3.0 + dk;
+    cases.push_back({e, true});
+  }
+  for (double d : {1e-4, 1e-6, 1e-10}) {  // nearly degenerate: a tiny blend at coordinates of size 1
+    BlendEnds e;
+    e.p0 = Vector3d(1, 1, 0), e.p1 = Vector3d(1 + d, 1 + d, 0), e.t0 = Vector3d(1, 0, 0), e.t1 = Vector3d(0, 1, 0);
+    cases.push_back({e, d >= 1e-6});
+  }
+  for (const Case& c : cases) {
+    const FairBlend b = fairBlend(c.ends);
+    ASSERT_TRUE(b.curve.poles.allFinite()) << b.reason;
+    const Handle(Geom_BSplineCurve) curve = toOcct(b.curve);
+    const gp_Pnt s = curve->Value(curve->FirstParameter()), e = curve->Value(curve->LastParameter());
+    EXPECT_EQ(Vector3d(s.X(), s.Y(), s.Z()), c.ends.p0);
+    EXPECT_EQ(Vector3d(e.X(), e.Y(), e.Z()), c.ends.p1);
+    if (c.representable) EXPECT_TRUE(b.monotone) << b.reason;
+  }
+}
