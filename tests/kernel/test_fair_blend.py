@@ -46,13 +46,25 @@ def assert_joins(curve, edge, end, leaving):
 
 
 def sketch_edges():
-    """A line, a circle arc, an ellipse arc and a B-spline, as a sketch has them."""
+    """A line, a circle arc, an ellipse arc and a B-spline, as a sketch holds them: the
+    sketch's own geometry (Sketcher::SketchObject.Geometry), made edges by fair_blend."""
+    import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
+
     line = Part.LineSegment(V(-4, 0, 0), V(0, 0, 0))
     arc = Part.ArcOfCircle(Part.Circle(V(6, 3, 0), V(0, 0, 1), 2.0), math.radians(200), math.radians(320))
     ellipse = Part.ArcOfEllipse(Part.Ellipse(V(2, 9, 0), 3.0, 1.5), math.radians(-60), math.radians(40))
     spline = Part.BSplineCurve()
     spline.interpolate([V(-3, 6, 0), V(-2, 7.5, 0), V(-0.5, 7.8, 0), V(1, 7, 0)])
-    return {"line": line.toShape(), "arc": arc.toShape(), "ellipse": ellipse.toShape(), "spline": spline.toShape()}
+    doc = FreeCAD.newDocument("FairBlendSketch")
+    try:
+        sketch = doc.addObject("Sketcher::SketchObject", "Sketch")
+        for g in (line, arc, ellipse, spline):
+            sketch.addGeometry(g, False)
+        doc.recompute()
+        geometry = [g.copy() for g in sketch.Geometry]
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+    return dict(zip(("line", "arc", "ellipse", "spline"), (g.toShape() for g in geometry)))
 
 
 PAIRS = [
