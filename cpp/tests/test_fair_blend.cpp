@@ -53,6 +53,14 @@ bool monotoneBySampling(const Handle(Geom_BSplineCurve)& c, const Vector3d& n, i
   return up || down;
 }
 
+// The curve's end points are the given ones to 1e-12 of the data's size (OCCT's evaluation).
+void expectExactEnds(const Handle(Geom_BSplineCurve)& c, const BlendEnds& ends, int index) {
+  const double size = std::max({ends.p0.norm(), ends.p1.norm(), (ends.p1 - ends.p0).norm()});
+  const gp_Pnt s = c->Value(c->FirstParameter()), e = c->Value(c->LastParameter());
+  EXPECT_LE((Vector3d(s.X(), s.Y(), s.Z()) - ends.p0).norm(), 1e-12 * size) << index;
+  EXPECT_LE((Vector3d(e.X(), e.Y(), e.Z()) - ends.p1).norm(), 1e-12 * size) << index;
+}
+
 double angleBetween(const gp_Vec& a, const Vector3d& b) {
   const Vector3d v(a.X(), a.Y(), a.Z());
   return std::atan2(v.cross(b).norm(), v.dot(b));
@@ -122,10 +130,7 @@ TEST(FairBlend, G1SolvesEveryClothoidArcWithExactEndsAndCertifiedMonotoneCurvatu
     if (i % 4 == 1) g1.normal = Vector3d::Zero();  // derived from the data
     const FairBlend b = fairBlend(g1);
     const Handle(Geom_BSplineCurve) c = toOcct(b.curve);
-    const double size = std::max({a.ends.p0.norm(), a.ends.p1.norm(), (a.ends.p1 - a.ends.p0).norm()});
-    const gp_Pnt s = c->Value(c->FirstParameter()), e = c->Value(c->LastParameter());
-    EXPECT_LE((Vector3d(s.X(), s.Y(), s.Z()) - a.ends.p0).norm(), 1e-12 * size) << i;
-    EXPECT_LE((Vector3d(e.X(), e.Y(), e.Z()) - a.ends.p1).norm(), 1e-12 * size) << i;
+    expectExactEnds(c, a.ends, i);
     // Directions to 1e-12, or to what the poles' coordinates can hold: a small blend far
     // from the origin has end legs of 1e-5 of its coordinates, each rounded to 1 ulp.
     const Eigen::Index last = b.curve.poles.rows() - 1;
@@ -157,10 +162,7 @@ TEST(FairBlend, G2SolvesClothoidArcsWithTheirEndCurvatures) {
     g2.k1 = a.kappa1;
     const FairBlend b = fairBlend(g2);
     const Handle(Geom_BSplineCurve) c = toOcct(b.curve);
-    const double size = std::max({a.ends.p0.norm(), a.ends.p1.norm(), (a.ends.p1 - a.ends.p0).norm()});
-    const gp_Pnt s = c->Value(c->FirstParameter()), e = c->Value(c->LastParameter());
-    EXPECT_LE((Vector3d(s.X(), s.Y(), s.Z()) - a.ends.p0).norm(), 1e-12 * size) << i;
-    EXPECT_LE((Vector3d(e.X(), e.Y(), e.Z()) - a.ends.p1).norm(), 1e-12 * size) << i;
+    expectExactEnds(c, a.ends, i);
     const double k0 = kappaAbout(c, g2.normal, c->FirstParameter()), k1 = kappaAbout(c, g2.normal, c->LastParameter());
     const double kscale = std::max(std::abs(a.kappa0), std::abs(a.kappa1));
     EXPECT_NEAR(k0, a.kappa0, 1e-9 * kscale) << i << ": " << b.reason;

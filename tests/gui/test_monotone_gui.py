@@ -292,6 +292,15 @@ def test_design_panel_keeps_every_difference_in_its_fair_location(scene, artifac
     assert not np.allclose(edited[:4], first_poles[:4]) or edited.shape != first_poles.shape
 
 
+def style_for_picture(sources, blend):
+    """Dark grey sources, a thick red blend: what the pictures' pixel counts look for."""
+    for obj in sources:
+        obj.ViewObject.LineWidth = 3
+        obj.ViewObject.LineColor = (0.2, 0.2, 0.2)
+    blend.ViewObject.LineWidth = 4
+    blend.ViewObject.LineColor = (0.85, 0.1, 0.1)
+
+
 def _pixels_near(image, rgb, tolerance=40):
     return int((np.abs(image[..., :3].astype(int) - np.array(rgb)).max(axis=-1) <= tolerance).sum())
 
@@ -304,11 +313,7 @@ def test_screenshot_of_a_blend_with_its_comb(scene, artifacts):
     from freecad_workbench.features.monotone_blend import make_monotone_blend
 
     blend = make_monotone_blend(doc, (lead, "Edge1"), (out, "Edge1"))
-    for obj in (lead, out):
-        obj.ViewObject.LineWidth = 3
-        obj.ViewObject.LineColor = (0.2, 0.2, 0.2)
-    blend.ViewObject.LineWidth = 4
-    blend.ViewObject.LineColor = (0.85, 0.1, 0.1)
+    style_for_picture((lead, out), blend)
     comb.show(blend, "Edge1")
     view = FreeCADGui.getDocument(doc.Name).ActiveView
     view.viewTop()
@@ -339,11 +344,7 @@ def test_screenshot_of_a_g2_fair_blend_with_its_comb(doc, artifacts):
     blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"))
     assert blend.Status == "ok", blend.Status
     assert blend.Curvature.startswith("monotone: the curvature increases from 0")
-    for obj in (lead, arc):
-        obj.ViewObject.LineWidth = 3
-        obj.ViewObject.LineColor = (0.2, 0.2, 0.2)
-    blend.ViewObject.LineWidth = 4
-    blend.ViewObject.LineColor = (0.85, 0.1, 0.1)
+    style_for_picture((lead, arc), blend)
     try:
         comb.show(blend, "Edge1")
         comb.show(arc, "Edge1")
