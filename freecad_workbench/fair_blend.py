@@ -60,6 +60,25 @@ class FairBlendReport:
         return self.monotone
 
 
+def curvature_extrema_of(certificate):
+    """The curvature extrema a MonotonicityReport shows, as (u, kappa, is_maximum): one inside
+    every span where kappa' changes sign, and one at every knot where the spans on its two
+    sides run opposite ways."""
+    extrema, direction = [], 0
+    for span in certificate.spans:
+        entering = leaving = {"increasing": 1, "decreasing": -1}.get(span.trend, 0)
+        if span.extremum is not None:
+            entering = 1 if span.extremum[2] else -1
+            leaving = -entering
+        if entering and direction and entering != direction:
+            extrema.append((span.u0, span.kappa0, direction > 0))
+        if span.extremum is not None:
+            extrema.append(span.extremum)
+        if leaving:
+            direction = leaving
+    return tuple(extrema)
+
+
 def _optional_curvature(value, name):
     if value is None:
         return float("nan")
@@ -92,7 +111,7 @@ def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
     )
     kernel_curve = result["curve"]
     certificate = report_from_certificate(result["certificate"], kernel_curve)
-    extrema = tuple(s.extremum for s in certificate.spans if s.extremum is not None)
+    extrema = curvature_extrema_of(certificate)
     report = FairBlendReport(
         monotone=bool(result["monotone"]),
         continuity="G1" if k0 is None and k1 is None else "G2",

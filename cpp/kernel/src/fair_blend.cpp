@@ -273,6 +273,25 @@ void matchEndCurvatures(BSplineCurve& curve, const Vec3& n, const BlendEnds& e) 
   }
 }
 
+/// Curvature extrema the certificate shows: one inside every span where kappa' changes sign,
+/// and one at every knot where the spans on its two sides run opposite ways.
+int curvatureExtrema(const MonotonicityCertificate& cert) {
+  int extrema = 0, direction = 0;  // +1 rising, -1 falling, 0 not yet known
+  for (const SpanCertificate& span : cert.spans) {
+    int entering = 0, leaving = 0;
+    if (span.trend == CurvatureTrend::Increasing) entering = leaving = 1;
+    if (span.trend == CurvatureTrend::Decreasing) entering = leaving = -1;
+    if (span.trend == CurvatureTrend::Extremum) {
+      ++extrema;
+      entering = span.maximum ? 1 : -1;
+      leaving = -entering;
+    }
+    if (entering != 0 && direction != 0 && entering != direction) ++extrema;
+    if (leaving != 0) direction = leaving;
+  }
+  return extrema;
+}
+
 std::string describeTrend(const MonotonicityCertificate& cert) {
   if (cert.increasing && cert.decreasing) return "constant";
   return cert.increasing ? "increasing" : "decreasing";
@@ -367,25 +386,46 @@ FairBlend fairBlend(const BlendEnds& ends) {
       std::tie(local, proved) = certifiedFollow(s, out.turning, e, wanted, true);
       why << "G2 clothoid spline (" << s.pieces() << " pieces, turning " << out.turning * 180.0 / kPi
           << " degrees) followed by " << local.knots.size() - 1 << " C2 spans";
-    } else if (sol.monotone || sol.fallback) {
-      const detail::Spiral& s = sol.monotone ? *sol.monotone : *sol.fallback;
+    } else if (sol.monotone) {
+      const detail::Spiral& s = *sol.monotone;
       out.length = s.length * r;
       out.turning = s.theta(s.length) - s.theta0;
       bool proved = false;
-      std::tie(local, proved) = certifiedFollow(s, out.turning, e, wanted, sol.monotone.has_value());
+      std::tie(local, proved) = certifiedFollow(s, out.turning, e, wanted, true);
       why << "G2 spiral (curvature cubic in arc length, turning " << out.turning * 180.0 / kPi
           << " degrees) followed by " << local.knots.size() - 1 << " C2 spans";
-      if (!sol.monotone) why << "; no monotone curve was found" << (sol.reason.empty() ? "" : ": " + sol.reason);
     } else {
-      // Nothing of the spiral family meets the ends: the G1 clothoid with the given end
-      // curvatures, which is G2 at both ends and as fair as its ends allow.
+      // No monotone curve: of the non-monotone spiral found and the G1 clothoid with the
+      // given end curvatures (both G2 at the ends), the one with the fewest curvature
+      // extrema, then the least variation.
+      struct Fallback {
+        BSplineCurve curve;
+        double length, turning;
+        int extrema;
+        double variation;
+        const char* what;
+      };
+      std::vector<Fallback> fallbacks;
+      auto consider = [&](const auto& guide, double length, double turning, const char* what) {
+        BSplineCurve curve = certifiedFollow(guide, turning, e, wanted, false).first;
+        const int extrema = curvatureExtrema(certifyMonotoneCurvature(curve));
+        const double variation = curvatureVariation(curve);
+        fallbacks.push_back({std::move(curve), length, turning, extrema, variation, what});
+      };
+      if (sol.fallback) {
+        const detail::Spiral& s = *sol.fallback;
+        consider(s, s.length, s.theta(s.length) - s.theta0, "the spiral found");
+      }
       const Clothoid c = detail::clothoidG1(Vec2::Zero(), theta0, Vec2::UnitX(), theta1);
-      out.length = c.length * r;
-      out.turning = c.theta(c.length) - c.theta0;
-      std::tie(local, std::ignore) = certifiedFollow(c, out.turning, e, wanted, false);
-      why << "no monotone-curvature curve meets these G2 ends"
-          << (sol.reason.empty() ? "" : ": " + sol.reason)
-          << "; the G1 clothoid with the given end curvatures instead";
+      consider(c, c.length, c.theta(c.length) - c.theta0, "the G1 clothoid with the given end curvatures");
+      const Fallback& best = *std::min_element(fallbacks.begin(), fallbacks.end(), [](const Fallback& x, const Fallback& y) {
+        return x.extrema != y.extrema ? x.extrema < y.extrema : x.variation < y.variation;
+      });
+      local = best.curve;
+      out.length = best.length * r;
+      out.turning = best.turning;
+      why << "no monotone-curvature curve " << (sol.reason.empty() ? "was found for these G2 ends" : "meets these G2 ends: " + sol.reason)
+          << "; the fairest found instead (" << best.what << ", " << best.extrema << " curvature extrema)";
     }
   }
   out.reason = why.str();
