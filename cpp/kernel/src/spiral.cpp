@@ -24,24 +24,27 @@ std::string num(double v) {
 // ---------------------------------------------------------------------------------------
 // The spiral.
 
-double Spiral::c(double tau) const { return tau + tau * (1.0 - tau) * (a + b * (1.0 - 2.0 * tau)); }
+double Spiral::kappa(double s) const {
+  const double t = s / length;
+  return k0 + (k1 - k0) * t + t * (1.0 - t) * (a + b * (1.0 - 2.0 * t));
+}
 
-double Spiral::dc(double tau) const {
-  // With v = 1 - 2 tau: c' = (1 - b/2) + a v + (3b/2) v^2.
+double Spiral::dkappa(double tau) const {
+  // With v = 1 - 2 tau: d kappa / d tau = (k1 - k0 - b/2) + a v + (3b/2) v^2.
   const double v = 1.0 - 2.0 * tau;
-  return (1.0 - 0.5 * b) + a * v + 1.5 * b * v * v;
+  return (k1 - k0 - 0.5 * b) + a * v + 1.5 * b * v * v;
 }
 
 double Spiral::theta(double s) const {
-  // theta0 + L (k0 tau + (k1 - k0) C(tau)), C = int_0^tau c.
+  // theta0 + L int_0^tau kappa.
   const double t = s / length, t2 = t * t;
-  const double C = 0.5 * t2 + a * (0.5 * t2 - t2 * t / 3.0) + b * (0.5 * t2 - t2 * t + 0.5 * t2 * t2);
-  return theta0 + length * (k0 * t + (k1 - k0) * C);
+  const double bump = a * (0.5 * t2 - t2 * t / 3.0) + b * (0.5 * t2 - t2 * t + 0.5 * t2 * t2);
+  return theta0 + length * (k0 * t + 0.5 * (k1 - k0) * t2 + bump);
 }
 
 Eigen::Vector2d Spiral::point(double s) const {
   // Composite 8-point Gauss in panels over which the tangent turns by at most 0.5 rad.
-  const double rate = length * (std::abs(k0) + std::abs(k1 - k0) * (1.0 + 0.25 * (std::abs(a) + std::abs(b))));
+  const double rate = length * (std::abs(k0) + std::abs(k1 - k0) + 0.25 * (std::abs(a) + std::abs(b)));
   const double tau1 = s / length;
   const int panels = std::max(1, static_cast<int>(std::ceil(rate * std::abs(tau1) / 0.5)));
   const double h = s / panels;
@@ -58,20 +61,24 @@ Eigen::Vector2d Spiral::point(double s) const {
 }
 
 double Spiral::minSlope() const {
-  // The quadratic g(v) = (1 - b/2) + a v + (3b/2) v^2 on [-1, 1]: its ends, and its vertex.
-  double m = std::min(1.0 + b + a, 1.0 + b - a);
-  if (b > 0.0) {
-    const double v = -a / (3.0 * b);
-    if (std::abs(v) <= 1.0) m = std::min(m, 1.0 - 0.5 * b - a * a / (6.0 * b));
+  // The least of sign(k1 - k0) d kappa / d tau over [0, 1], over |k1 - k0|: the quadratic
+  // g(v) = alpha + a v + beta v^2 at v = +-1 and at its vertex.
+  const double dk = k1 - k0;
+  if (dk == 0.0) return a == 0.0 && b == 0.0 ? 0.0 : -HUGE_VAL;  // constant, or not monotone
+  const double sign = dk > 0.0 ? 1.0 : -1.0, alpha = sign * (dk - 0.5 * b), la = sign * a, beta = sign * 1.5 * b;
+  double m = std::min(alpha + la + beta, alpha - la + beta);
+  if (beta > 0.0) {
+    const double v = -la / (2.0 * beta);
+    if (std::abs(v) <= 1.0) m = std::min(m, alpha - la * la / (4.0 * beta));
   }
-  return m;
+  return m / std::abs(dk);
 }
 
 double Spiral::variation() const {
-  // int_0^1 c'^2 = alpha^2 + a^2/3 + beta^2/5 + 2 alpha beta / 3, alpha = 1 - b/2, beta = 3b/2.
-  const double alpha = 1.0 - 0.5 * b, beta = 1.5 * b;
-  const double integral = alpha * alpha + a * a / 3.0 + beta * beta / 5.0 + 2.0 * alpha * beta / 3.0;
-  return length * length * (k1 - k0) * (k1 - k0) * integral;
+  // L^2 int_0^1 (d kappa / d tau)^2 = L^2 (alpha^2 + a^2/3 + beta^2/5 + 2 alpha beta / 3),
+  // alpha = k1 - k0 - b/2, beta = 3b/2.
+  const double alpha = (k1 - k0) - 0.5 * b, beta = 1.5 * b;
+  return length * length * (alpha * alpha + a * a / 3.0 + beta * beta / 5.0 + 2.0 * alpha * beta / 3.0);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -191,8 +198,8 @@ struct Candidate {
 
 /// Newton on (L, b) for the end point, with a from the turning; damped by backtracking.
 Candidate newton(Spiral s, double Theta) {
-  const double dk = s.k1 - s.k0;
-  auto shapeFor = [&](double L) { return 6.0 * ((Theta / L - s.k0) / dk - 0.5); };
+  // The turning L (k0 + (k1 - k0)/2 + a/6) = Theta gives a from L.
+  auto shapeFor = [&](double L) { return 6.0 * (Theta / L - s.k0 - 0.5 * (s.k1 - s.k0)); };
   auto residual = [&](double L, double b) {
     Spiral t = s;
     t.length = L;
@@ -218,7 +225,7 @@ Candidate newton(Spiral s, double Theta) {
     bool improved = false;
     for (int k = 0; k < 20; ++k, lambda *= 0.5) {
       const double nL = L - lambda * step[0], nb = b - lambda * step[1];
-      if (!(nL > 1.0) || std::abs(nb) > 50.0) continue;  // longer than the chord; a sane shape
+      if (!(nL > 1.0) || std::abs(nb) > 50.0 * (1.0 + std::abs(s.k1 - s.k0) + std::abs(s.k0))) continue;
       const Eigen::Vector2d nF = residual(nL, nb);
       if (nF.norm() < F.norm()) {
         L = nL, b = nb, F = nF;
@@ -335,7 +342,22 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   SpiralSolution out;
   const double delta = normalizeAngle(theta1 - theta0);
   const double kmax = std::max(std::abs(k0), std::abs(k1));
-  if (std::abs(k1 - k0) <= 1e-12 * std::max(1.0, kmax)) {
+  const bool equal = std::abs(k1 - k0) <= 1e-12 * std::max(1.0, kmax);
+  const Clothoid g1 = clothoidG1(Eigen::Vector2d::Zero(), theta0, Eigen::Vector2d(1.0, 0.0), theta1);
+  const double g1Turning = g1.theta(g1.length) - g1.theta0;
+  std::vector<Candidate> found;
+  // Newton from the length L (a from the turning, b = 0); true when it ends monotone.
+  auto tryLength = [&](double Theta, double L) {
+    if (!(std::abs(Theta) < 2.0 * kPi)) return false;  // a blend turns less than a full turn
+    if (!(L > 1.0 && L < 1e4)) return false;          // longer than the chord, and not absurdly long
+    Spiral s;
+    s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
+    const Candidate c = newton(s, Theta);
+    if (!c.converged) return false;
+    found.push_back(c);
+    return c.spiral.minSlope() >= kMinSlope;
+  };
+  if (equal) {
     // Equal end curvatures: a monotone curve between them is a circle arc (or a segment).
     const double k = 0.5 * (k0 + k1);
     for (int n = -1; n <= 1; ++n) {
@@ -352,32 +374,24 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
     }
     out.reason = "the end curvatures are equal (" + num(k) + " per chord length), so a curve whose curvature runs "
                  "one way between them is a circle arc, and no circle of that curvature meets both ends";
-    return out;
-  }
-  out.reason = kneserReason(theta0, k0, theta1, k1);
-
-  // Starts: the length at which a profile of shape a (b = 0) has the turning. First the
-  // clothoid (a = 0) in every winding; only where none of those is monotone, the other
-  // shapes, per winding until one converges to a monotone solution. Of all solutions found
-  // the fairest is kept.
-  std::vector<Candidate> found;
-  auto tryStart = [&](double Theta, double aStart) {
-    if (!(std::abs(Theta) < 2.0 * kPi)) return false;  // a blend turns less than a full turn
-    const double L = Theta / (k0 + (k1 - k0) * (0.5 + aStart / 6.0));
-    if (!(L > 1.0 && L < 1e4)) return false;  // longer than the chord, and not absurdly long
-    Spiral s;
-    s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
-    const Candidate c = newton(s, Theta);
-    if (!c.converged) return false;
-    found.push_back(c);
-    return c.spiral.minSlope() >= kMinSlope;
-  };
-  bool any = false;
-  for (int n : {0, 1, -1}) any = tryStart(delta + 2.0 * kPi * n, 0.0) || any;
-  if (!any) {
-    for (int n : {0, 1, -1}) {
-      for (double aStart : {0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
-        if (tryStart(delta + 2.0 * kPi * n, aStart)) break;
+    // The fairest curve with one bump of curvature between them, for the report.
+    for (double L : {g1.length, 1.05, 1.3, 2.0}) tryLength(g1Turning, L);
+  } else {
+    out.reason = kneserReason(theta0, k0, theta1, k1);
+    // Starts: the length at which a profile of shape a = (k1 - k0) aStart (b = 0) has the
+    // turning. First the clothoid (aStart = 0) in every winding, and the G1 clothoid's
+    // length; only where none of those is monotone, the other shapes, per winding until one
+    // converges to a monotone solution. Of all solutions found the fairest is kept.
+    auto tryShape = [&](double Theta, double aStart) {
+      return tryLength(Theta, Theta / (k0 + (k1 - k0) * (0.5 + aStart / 6.0)));
+    };
+    bool any = tryLength(g1Turning, g1.length);
+    for (int n : {0, 1, -1}) any = tryShape(delta + 2.0 * kPi * n, 0.0) || any;
+    if (!any) {
+      for (int n : {0, 1, -1}) {
+        for (double aStart : {0.5, -0.5, 1.0, -1.0, 1.5, -1.5}) {
+          if (tryShape(delta + 2.0 * kPi * n, aStart)) break;
+        }
       }
     }
   }
@@ -389,13 +403,11 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
       out.fallback = s;
     }
   }
-  if (!out.monotone) {
+  if (!out.monotone && !equal) {
     // The cubic profiles do not reach these ends monotonically: clothoid splines, which do
     // wherever a piecewise-linear monotone curvature does.
     // Starts: the G1 clothoid's length in its winding, then a nearly straight curve and
     // two longer ones; per winding until one is monotone.
-    const Clothoid g1 = clothoidG1(Eigen::Vector2d::Zero(), theta0, Eigen::Vector2d(1.0, 0.0), theta1);
-    const double g1Turning = g1.theta(g1.length) - g1.theta0;
     for (int n : {0, 1, -1}) {
       const double Theta = delta + 2.0 * kPi * n;
       if (!(std::abs(Theta) < 2.0 * kPi)) continue;

@@ -1,6 +1,8 @@
 // Monotone spirals for G2 ends: curves whose curvature runs from k0 to k1 as a cubic in arc
-// length, kappa(s) = k0 + (k1 - k0) c(s / L) with c(tau) = tau + tau (1 - tau) (a + b (1 - 2 tau)),
-// c(0) = 0, c(1) = 1. a = b = 0 is the clothoid; the curvature is monotone where c' > 0.
+// length, kappa = k0 + (k1 - k0) tau + tau (1 - tau) (a + b (1 - 2 tau)), tau = s / L.
+// a = b = 0 is the clothoid; the curvature is monotone where d kappa / d tau keeps the sign
+// of k1 - k0. The bump (a, b) also serves equal end curvatures, where no monotone curve but
+// the circle exists, for the fairest non-monotone answer.
 // Private to the kernel: the fair-blend solver follows these curves for G2 ends.
 #pragma once
 #include <optional>
@@ -15,14 +17,14 @@ struct Spiral {
   Eigen::Vector2d start = Eigen::Vector2d::Zero();
   double theta0 = 0.0, k0 = 0.0, k1 = 0.0, length = 1.0, a = 0.0, b = 0.0;
 
-  double c(double tau) const;       ///< the profile, 0 at tau = 0, 1 at tau = 1
-  double dc(double tau) const;      ///< its derivative in tau
-  double kappa(double s) const { return k0 + (k1 - k0) * c(s / length); }
+  double kappa(double s) const;
+  double dkappa(double tau) const;  ///< d kappa / d tau
   double theta(double s) const;     ///< theta0 + integral_0^s kappa
   Eigen::Vector2d point(double s) const;
-  /// min over tau in [0, 1] of c'(tau): the curvature is strictly monotone when > 0.
+  /// min over tau in [0, 1] of sign(k1 - k0) (d kappa / d tau) / |k1 - k0|: 1 for the
+  /// clothoid; the curvature is strictly monotone when > 0.
   double minSlope() const;
-  /// L^3 int (dkappa/ds)^2 ds = L^2 (k1 - k0)^2 int_0^1 c'^2.
+  /// L^3 int (dkappa/ds)^2 ds = L^2 int_0^1 (d kappa / d tau)^2.
   double variation() const;
 };
 
@@ -43,13 +45,13 @@ struct ClothoidSpline {
 
 /// The outcome of the G2 problem in the chord frame (p0 = (0, 0), p1 = (1, 0)).
 struct SpiralSolution {
-  std::optional<Spiral> monotone;         ///< the fairest cubic-profile solution with c' >= kMinSlope
+  std::optional<Spiral> monotone;         ///< the fairest cubic-profile solution with minSlope >= kMinSlope
   std::optional<ClothoidSpline> spline;   ///< else a monotone clothoid spline, if one was found
   std::optional<Spiral> fallback;         ///< else the fairest solution found (curvature not monotone)
   std::string reason;                     ///< why no monotone curve exists (a necessary condition fails), or ""
 };
 
-/// The least slope c' a solution must keep to count as monotone: the cubic that follows it
+/// The least minSlope a solution must keep to count as monotone: the cubic that follows it
 /// needs kappa' away from 0 to be certified.
 constexpr double kMinSlope = 0.02;
 
