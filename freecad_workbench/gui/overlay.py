@@ -32,6 +32,7 @@ class _Markers:
         self.root.addChild(self.coords)
         self.root.addChild(self.markers)
         parent.addChild(self.root)
+        self.set([])  # a new SoCoordinate3 holds one point, (0, 0, 0): no marker until set
 
     def set(self, points):
         points = _vec3(points)

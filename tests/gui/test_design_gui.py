@@ -729,3 +729,48 @@ def test_saved_design_reopens_with_its_view_providers(scene, tmp_path):
         gui().updateGui()
     finally:
         FreeCAD.closeDocument(reopened.Name)
+
+
+def test_overlay_draws_markers_only_where_its_points_are(doc, artifacts):
+    """No marker where no point is (the unused marker sets used to draw their default point at
+    the origin), and the highlighted and moved poles are drawn over the pole markers."""
+    from PIL import Image
+
+    import Part
+    from freecad_workbench.gui.overlay import HIGHLIGHT_COLOR, MOVED_COLOR, POLE_COLOR, Overlay
+
+    frame = doc.addObject("Part::Feature", "Frame")  # makes the view frame the origin too
+    frame.Shape = Part.makeLine(V(-3, -3, 0), V(-2, -3, 0))
+    doc.recompute()
+    poles = [V(2, 2, 0), V(4, 5, 0), V(6, 3, 0), V(8, 6, 0), V(10, 2, 0)]
+    overlay = Overlay()
+    g = gui()
+    view = g.getDocument(doc.Name).ActiveView
+    overlay.attach(view)
+    try:
+        overlay.set_polygon(poles)
+        overlay.set_moved([poles[2]])
+        overlay.set_highlight([poles[4]])
+        view.viewTop()
+        view.fitAll()
+        g.updateGui()
+        width, height = view.getSize()
+        path = os.path.join(artifacts, "overlay_markers.png")
+        view.saveImage(path, width, height, "White")
+        image = np.asarray(Image.open(path).convert("RGB"))
+    finally:
+        overlay.detach()
+
+    def near(point, rgb, radius=7):
+        x, y = view.getPointOnScreen(point)
+        counts = []
+        for row in (int(round(y)), int(round(height - 1 - y))):  # either convention of y
+            patch = image[max(0, row - radius):row + radius + 1, max(0, int(x) - radius):int(x) + radius + 1]
+            counts.append(pixels_near(patch, tuple(int(255 * c) for c in rgb), tolerance=30))
+        return max(counts)
+
+    assert near(poles[0], POLE_COLOR) > 10
+    assert near(poles[2], MOVED_COLOR) > 10
+    assert near(poles[4], HIGHLIGHT_COLOR) > 10
+    for color in (MOVED_COLOR, HIGHLIGHT_COLOR, (0.0, 0.0, 0.0)):
+        assert near(V(0, 0, 0), color) == 0, color  # nothing drawn at the origin
