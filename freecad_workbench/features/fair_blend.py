@@ -74,9 +74,11 @@ class FairBlend(FeatureProxy):
         if old:
             obj.Continuity = "G1"
             obj.Method = "grid" if old_method == "grid" else "paper"  # "fairest" was the paper's solver
+        show_what_applies(obj)
 
     def build(self, obj):
         self._warning = None
+        show_what_applies(obj)
         p0, t0, p1, t1, k0, k1, normal = blend_ends(obj)
         if obj.Method != "fair":
             if obj.Continuity == "G2":
@@ -97,6 +99,18 @@ class FairBlend(FeatureProxy):
         if warning and obj.Status == "ok":  # a curve, but not a monotone one: say so, loudly
             set_if_changed(obj, "Status", WARNING + warning)
             FreeCAD.Console.PrintWarning(f"{obj.Label}: {warning}\n")
+
+
+def show_what_applies(obj):
+    """Directions and curvatures are used at vertex ends only (an edge gives its own tangent
+    and curvature), curvatures only for G2: the others are hidden in the property editor."""
+    for side in ("Start", "End"):
+        try:
+            vertex = _element(getattr(obj, side), side).ShapeType == "Vertex"
+        except InputError:
+            vertex = True  # not set yet, or unusable: show everything
+        obj.setEditorMode(side + "Direction", 0 if vertex else 2)
+        obj.setEditorMode(side + "Curvature", 0 if vertex and obj.Continuity == "G2" else 2)
 
 
 def make_fair_blend(

@@ -86,6 +86,23 @@ def test_g1_and_the_papers_method(doc, line_and_arc):
     assert "Algorithm 2 is G1 only" in blend.Status
 
 
+def test_the_property_editor_shows_directions_and_curvatures_only_where_they_are_used(doc, line_and_arc):
+    lead, arc = line_and_arc
+    blend = make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"))
+    for name in ("StartDirection", "EndDirection", "StartCurvature", "EndCurvature"):
+        assert blend.getEditorMode(name) == ["Hidden"], name  # the edges give their own
+    a = doc.addObject("Part::Vertex", "A")
+    doc.recompute()
+    blend.Start = a
+    blend.StartDirection = V(1, 0, 0)
+    doc.recompute()
+    assert blend.getEditorMode("StartDirection") == [] and blend.getEditorMode("StartCurvature") == []
+    assert blend.getEditorMode("EndDirection") == ["Hidden"]
+    blend.Continuity = "G1"
+    doc.recompute()
+    assert blend.getEditorMode("StartCurvature") == ["Hidden"] and blend.getEditorMode("StartDirection") == []
+
+
 def test_vertex_ends_take_their_directions_and_curvatures_from_properties(doc):
     a = doc.addObject("Part::Vertex", "A")
     b = doc.addObject("Part::Vertex", "B")
