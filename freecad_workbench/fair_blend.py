@@ -24,7 +24,7 @@ Curvatures are signed about the plane normal: positive turns counter-clockwise s
 the normal's tip (+Z for data in the XY plane).
 """
 from dataclasses import dataclass
-from typing import Optional, Tuple
+from typing import Tuple
 
 import numpy as np
 
