@@ -4,10 +4,10 @@ import FreeCADGui
 
 
 class FairSplinesWorkbench(FreeCADGui.Workbench):
-    """Fair curves: csr-spline fitting, design with basic curves, curvature combs and plots."""
+    """Fair curves: csr-spline fitting, design with basic curves, fair blends, curvature analysis."""
 
     MenuText = "FairSplines"
-    ToolTip = "Fair curves: csr-spline fitting, design with basic curves, curvature combs and curvature plots"
+    ToolTip = "Fair curves: splines through points, design with basic curves, fair blends, curvature analysis"
 
     def __init__(self):
         import importlib.util
@@ -25,25 +25,20 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, blend_commands, commands, design_commands, monotone_commands
+        from freecad_workbench.gui import ICON_DIR, commands
 
         Gui.addIconPath(ICON_DIR)
-        self.appendToolbar("FairSplines", list(commands.COMMANDS))
-        self.appendMenu("FairSplines", list(commands.COMMANDS))
-        # Design with basic curves: its own toolbar; in the menu the kinds in a submenu.
-        self.appendToolbar("FairSplines design", list(design_commands.DESIGN_COMMANDS))
-        self.appendMenu("FairSplines", ["Separator"])
-        self.appendMenu(["FairSplines", "Basic curve"], list(design_commands.KIND_COMMANDS.values()))
-        self.appendMenu("FairSplines", list(design_commands.DESIGN_COMMANDS[1:]))
-        # Monotone curvature: its own toolbar, and a submenu.
-        self.appendToolbar("FairSplines monotone", list(monotone_commands.COMMANDS))
-        self.appendMenu(["FairSplines", "Monotone curvature"], list(monotone_commands.COMMANDS))
-        # Basic shapes blended into NURBS: its own toolbar, and a submenu.
-        self.appendToolbar("FairSplines blend", list(blend_commands.COMMANDS))
-        self.appendMenu(["FairSplines", "Blending"], list(blend_commands.COMMANDS))
+        commands.register()
+        self.appendToolbar("FairSplines", list(commands.TOOLBAR))
+        for submenu, names in commands.MENU:
+            self.appendMenu(["FairSplines", submenu] if submenu else "FairSplines", list(names))
 
     def Activated(self):
-        pass
+        # Put the FairSplines toolbar on a row of its own when FreeCAD's toolbars fill the
+        # first: appended there, it collapses to one button and a chevron.
+        from freecad_workbench.gui.commands import place_toolbar
+
+        place_toolbar()
 
     def Deactivated(self):
         pass

@@ -11,6 +11,7 @@ certificate that any planar B-spline or Bezier curve has monotone curvature.
 Curvature is signed about the curve's plane normal (counter-clockwise turning positive), so
 `increasing` and `decreasing` refer to the signed curvature along the curve's parameter.
 """
+import re
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
@@ -126,6 +127,11 @@ class SpanVerdict:
     paper: Optional[str]  #: Lemmas 1-3 / Theorem 1 in the segment's frame (cubic polynomial curves)
 
 
+_SPAN = re.compile(r"\bspan (\d+)")
+# the curvature values of a monotone verdict: "from A to B", "constant curvature A"
+_UNITS = re.compile(r"(?<=from )[-+0-9.e]+|(?<= to )[-+0-9.e]+(?= \()|(?<=constant curvature )[-+0-9.e]+")
+
+
 @dataclass(frozen=True)
 class MonotonicityReport:
     """check_monotone_curvature's answer."""
@@ -141,6 +147,25 @@ class MonotonicityReport:
 
     def __bool__(self):
         return self.monotone
+
+    @property
+    def summary(self):
+        """The verdict in a designer's words, for the GUI: what the curvature does, in 1/mm,
+        spans numbered from 1; no Bernstein coefficients (str() keeps the whole proof)."""
+        for s in self.spans:
+            if s.trend == "extremum":
+                u, kappa, maximum = s.extremum
+                kind = "maximum" if maximum else "minimum"
+                return (f"not monotone: the curvature has a {kind} of {kappa:.6g} 1/mm "
+                        f"at parameter {u:.6g} (span {s.index + 1})")
+            if s.trend == "singular":
+                return (f"not monotone: the curve stops (its derivative vanishes) on span {s.index + 1}, "
+                        "so its curvature is undefined there")
+            if s.trend == "undecided":
+                return (f"not proven: the curvature is flat within rounding on span {s.index + 1} "
+                        "and its direction could not be decided")
+        text = _SPAN.sub(lambda m: f"span {int(m.group(1)) + 1}", self.reason)
+        return _UNITS.sub(lambda m: f"{m.group(0)} 1/mm", text) if self.monotone else text
 
     def __str__(self):
         lines = [self.reason]

@@ -111,7 +111,10 @@ def _close_plot_windows():
     exit, Shiboken tears them down after Python (a crash at exit on PySide6)."""
     if "matplotlib.pyplot" in sys.modules:
         sys.modules["matplotlib.pyplot"].close("all")
+    from freecad_workbench.gui import plot
     from freecad_workbench.gui.qt import QtCore, QtWidgets
+
+    plot.close_plot_tabs()  # the plot tabs of the main window
 
     QtCore.QCoreApplication.sendPostedEvents(None, QtCore.QEvent.DeferredDelete)
     for _ in range(3):

@@ -28,3 +28,12 @@ def line_into_arc(doc):
     arc.Shape = Part.ArcOfCircle(Part.Circle(centre, V(0, 0, 1), 10), start, start + math.radians(120)).toShape()
     doc.recompute()
     return lead, arc
+
+
+def assert_failed_like_freecad(obj, message):
+    """A feature that could not be built fails as FreeCAD's own do: invalid (the error mark
+    in the tree), FreeCAD's status string and the Status property name the reason. (That
+    the last good shape is kept, each test checks itself.)"""
+    assert message in obj.Status, obj.Status
+    assert not obj.isValid() and "Invalid" in obj.State, obj.State
+    assert message in obj.getStatusString(), obj.getStatusString()

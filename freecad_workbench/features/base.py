@@ -2,13 +2,36 @@
 
 A feature proxy lists its properties; they are added only where missing, so documents
 from older versions load, and a Version property allows migration. `execute` calls the
-subclass's `build`; if that raises, the object keeps its last good shape, the message
-goes into the read-only Status property and the report view, and recompute goes on
-(the exception is never passed to FreeCAD). Headless: no GUI import.
+subclass's `build`. If that raises, the feature fails the way FreeCAD's own do:
+- it keeps its last good shape;
+- the message goes into the read-only Status property and the report view;
+- its verdicts about the shape (VERDICTS: a certificate, the joins) are marked not known,
+  so none of them is left looking valid;
+- FeatureFailed is raised to FreeCAD, which marks the object invalid (the error mark in
+  the tree, "Recompute failed" in the report view) and recomputes it again next time.
+  Objects that do not depend on it recompute as usual; the document stays intact.
+
+Headless: no GUI import; attach_view_provider imports the GUI's view providers only
+when the GUI is up.
 """
 import FreeCAD
 
 OUTPUT = 8  # App::Property::Output: setting the property does not touch the object
+NOT_KNOWN = "not known: the last recompute failed"
+
+
+class FeatureFailed(RuntimeError):
+    """Raised to FreeCAD from execute when a feature could not be built; the message is
+    the reason (also in the feature's Status)."""
+
+
+def attach_view_provider(obj, name):
+    """Give obj the view provider `name` of gui/view_providers.py, when the GUI is up.
+    The only way features reach the GUI."""
+    if FreeCAD.GuiUp and getattr(obj, "ViewObject", None) is not None:
+        from ..gui import view_providers
+
+        getattr(view_providers, name)(obj.ViewObject)
 
 
 class StatelessProxy:
@@ -40,6 +63,7 @@ class FeatureProxy(StatelessProxy):
     PROPERTIES = ()
     ENUMERATIONS = {}  # {property name: choices} of App::PropertyEnumeration properties
     OUTPUTS = ("Status",)
+    VERDICTS = ()  # outputs that judge the shape: marked NOT_KNOWN (strings) or cleared on failure
 
     def __init__(self, obj):
         obj.Proxy = self
@@ -79,8 +103,9 @@ class FeatureProxy(StatelessProxy):
         try:
             shape = self.build(obj)
         except Exception as exc:  # InputError, or a source the kernel or OCCT could not read
-            fail(obj, str(exc).strip() or type(exc).__name__)
-            return
+            message = str(exc).strip() or type(exc).__name__
+            fail(obj, message, self.VERDICTS)
+            raise FeatureFailed(message) from None
         obj.Shape = shape
         set_if_changed(obj, "Status", "ok")
 
@@ -92,7 +117,10 @@ def set_if_changed(obj, name, value):
         setattr(obj, name, value)
 
 
-def fail(obj, message):
-    """Error state: keep the last good shape, show the message, let recompute go on."""
+def fail(obj, message, verdicts=()):
+    """Error state: keep the last good shape, show the message, mark the verdicts not known."""
     set_if_changed(obj, "Status", message)
+    for name in verdicts:
+        value = getattr(obj, name)
+        set_if_changed(obj, name, NOT_KNOWN if isinstance(value, str) else [])
     FreeCAD.Console.PrintError(f"{obj.Label}: {message}\n")

@@ -37,7 +37,7 @@ import FreeCAD
 
 from .. import basic
 from ..errors import InputError
-from .base import FeatureProxy
+from .base import FeatureProxy, attach_view_provider
 from .undo import undo_step
 
 KINDS = (
@@ -238,9 +238,6 @@ def make_basic_curve(doc, kind="Circle arc", placement=None, name=None, **dimens
             setattr(obj, key, value)
         if placement is not None:
             obj.Placement = placement
-        if FreeCAD.GuiUp:
-            from ..gui.design_view_providers import ViewProviderBasicCurve
-
-            ViewProviderBasicCurve(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderBasicCurve")
         doc.recompute()
     return obj

@@ -31,7 +31,7 @@ import Part
 
 from .. import blend, shapes
 from ..errors import InputError
-from .base import FeatureProxy, set_if_changed
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 KINDS = ("Sphere zone", "Cylinder", "Cone", "Torus")
@@ -130,6 +130,7 @@ class BlendShape(FeatureProxy):
     PROPERTIES = _PROPERTIES
     ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES, "Continuity": CONTINUITIES}
     OUTPUTS = ("Status", "Patches")
+    VERDICTS = ("Patches",)
 
     def ensure_properties(self, obj):
         super().ensure_properties(obj)
@@ -319,9 +320,6 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
             setattr(obj, key, [float(v) for v in value] if isinstance(value, (list, tuple)) else value)
         if placement is not None:
             obj.Placement = placement
-        if FreeCAD.GuiUp:
-            from ..gui.blend_commands import ViewProviderBlendShape
-
-            ViewProviderBlendShape(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderBlendShape")
         doc.recompute()
     return obj

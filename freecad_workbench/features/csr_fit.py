@@ -26,9 +26,10 @@ import re
 import FreeCAD
 import Part
 
+from .. import preferences
 from ..curves import PARAMETRIZATIONS, csr_spline
 from ..errors import InputError
-from .base import FeatureProxy
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 # Points closer than this are one point when edges are joined (OCCT's Precision::Confusion).
@@ -39,7 +40,11 @@ _PROPERTIES = (
     ("App::PropertyLinkSubList", "Sources", "Vertices, edges, Points objects or sketches, in order", None, 0),
     ("App::PropertyEnumeration", "Parametrization", "Parameters of the data points", "chordal", 0),
     ("App::PropertyBool", "Closed", "Fit a closed (periodic) curve", False, 0),
-    ("App::PropertyFloat", "Epsilon", "Curvature tolerance of eq. (6), relative to 1/size", 1e-9, 0),
+    ("App::PropertyString", "CurvatureTolerance",
+     "How closely the curve keeps circles and lines of the data, relative to its size (for example 1e-9): "
+     "the csr-spline's epsilon of eq. (6). Shown as text, which keeps small values readable", None, 0),
+    ("App::PropertyFloat", "Epsilon", "The curvature tolerance as a number (for macros; CurvatureTolerance "
+     "shows it)", 1e-9, 2),
     ("App::PropertyInteger", "Samples", "Points taken from each source edge", 50, 0),
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
@@ -48,13 +53,37 @@ class CsrFit(FeatureProxy):
     """Proxy of a Part::FeaturePython holding a csr-spline fitted to its Sources."""
 
     Type = "CsrFit"
-    VERSION = 1
+    VERSION = 2  # 2: CurvatureTolerance shows Epsilon (the property editor showed 1e-9 as 0.00)
     GROUP = "Csr fit"
     PROPERTIES = _PROPERTIES
     ENUMERATIONS = {"Parametrization": PARAMETRIZATIONS}
 
+    def onChanged(self, obj, prop):
+        """Epsilon and CurvatureTolerance are one value: the number and its text."""
+        if "Restore" in obj.State or not {"Epsilon", "CurvatureTolerance"} <= set(obj.PropertiesList):
+            return
+        if prop == "Epsilon":
+            set_if_changed(obj, "CurvatureTolerance", f"{obj.Epsilon:g}")
+        elif prop == "CurvatureTolerance":
+            try:
+                value = float(obj.CurvatureTolerance)
+            except ValueError:
+                return  # build says so
+            if value != obj.Epsilon:
+                obj.Epsilon = value
+
+    def migrate(self, obj):
+        if obj.Version < 2:
+            obj.CurvatureTolerance = f"{obj.Epsilon:g}"
+        super().migrate(obj)
+
     def build(self, obj):
         origins = []
+        obj.setEditorMode("Samples", 0 if uses_edges(obj.Sources) else 2)
+        try:
+            float(obj.CurvatureTolerance)
+        except ValueError:
+            raise InputError(f"CurvatureTolerance is not a number: {obj.CurvatureTolerance!r}") from None
         try:
             points, origins = collect_points(obj.Sources, obj.Samples, obj.Closed)
             curve = csr_spline(points, closed=obj.Closed, parametrization=obj.Parametrization, epsilon=obj.Epsilon)
@@ -63,12 +92,13 @@ class CsrFit(FeatureProxy):
         return curve.toShape()
 
 
-def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=1e-9, samples=50, name="CsrFit"):
+def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=None, samples=50, name="CsrFit"):
     """Create a csr fit in `doc` and recompute, as one undoable step.
 
     sources: a list whose items are a document object (taken whole), ``(obj, "Vertex1")``
     or ``(obj, ["Edge1", "Edge2"])``. Returns the new object; if the data is bad it exists
-    with the message in its Status (see the module docstring).
+    with the message in its Status (see the module docstring). epsilon None takes the
+    CsrEpsilon preference (freecad_workbench/preferences.py).
     """
     links = normalize_sources(sources)
     if parametrization not in PARAMETRIZATIONS:
@@ -79,12 +109,9 @@ def make_csr_fit(doc, sources, parametrization="chordal", closed=False, epsilon=
         obj.Sources = links
         obj.Parametrization = parametrization
         obj.Closed = bool(closed)
-        obj.Epsilon = float(epsilon)
+        obj.Epsilon = float(preferences.get("CsrEpsilon") if epsilon is None else epsilon)
         obj.Samples = int(samples)
-        if FreeCAD.GuiUp:
-            from ..gui.view_providers import ViewProviderCsrFit
-
-            ViewProviderCsrFit(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderCsrFit")
         doc.recompute()
     return obj
 
@@ -125,6 +152,23 @@ def collect_points(sources, samples=50, closed=False):
         points.pop()
         origins.pop()
     return points, origins
+
+
+def uses_edges(sources):
+    """Whether any of the sources is sampled as an edge (then Samples applies)."""
+    for obj, subs in sources:
+        if obj is None:
+            continue
+        for sub in subs or ("",):
+            element = sub.rsplit(".", 1)[-1]
+            if element:
+                if element.startswith("Edge"):
+                    return True
+            elif not obj.isDerivedFrom("Points::Feature") and not obj.isDerivedFrom("Sketcher::SketchObject"):
+                shape = getattr(obj, "Shape", None)
+                if isinstance(shape, Part.Shape) and not shape.isNull() and shape.Edges:
+                    return True
+    return False
 
 
 def usable_source(obj, sub=""):

@@ -35,11 +35,11 @@ import numpy as np
 import FreeCAD
 import Part
 
-from .. import basic
+from .. import basic, preferences
 from ..design import design_spline, piece_marks
 from ..errors import InputError
 from .basic_curve import is_basic_curve
-from .base import FeatureProxy, set_if_changed
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 # Marks a new piece gets when none are given: with m = 5 intervals a conic stays exact on
@@ -72,6 +72,7 @@ class DesignSpline(FeatureProxy):
     GROUP = "Design spline"
     PROPERTIES = _PROPERTIES
     OUTPUTS = ("Joins", "MarksAdded", "Status")
+    VERDICTS = ("Joins", "MarksAdded")
 
     def build(self, obj):
         labels = [piece_label(source, sub) for source, sub in piece_links(obj)]
@@ -262,7 +263,7 @@ def normalize_pieces(pieces):
     return links, marks
 
 
-def make_design_spline(doc, pieces, join_tolerance=DEFAULT_JOIN_TOLERANCE, name="DesignSpline", reversed=None):
+def make_design_spline(doc, pieces, join_tolerance=None, name="DesignSpline", reversed=None):
     """Create a Design spline in `doc` and recompute, as one undoable step.
 
     pieces: [(link, marks)], link an object (a BasicCurve, or an object with one edge) or
@@ -270,6 +271,7 @@ def make_design_spline(doc, pieces, join_tolerance=DEFAULT_JOIN_TOLERANCE, name=
         in the piece's direction in the design; None gives DEFAULT_MARKS.
     reversed: per piece whether to run it backwards; None chooses so that consecutive
         pieces meet end to start (auto_reversed).
+    join_tolerance: None takes the JoinTolerance preference (freecad_workbench/preferences.py).
     Returns the new object; bad marks or pieces leave it with the message in its Status.
     Raises InputError only for input that cannot be stored (not document objects).
     """
@@ -308,24 +310,25 @@ def make_design_spline(doc, pieces, join_tolerance=DEFAULT_JOIN_TOLERANCE, name=
         obj.Pieces = links
         set_marks(obj, parameters)
         obj.Reversed = reversed
-        obj.JoinTolerance = float(join_tolerance)
-        if FreeCAD.GuiUp:
-            from ..gui.design_view_providers import ViewProviderDesignSpline
-
-            ViewProviderDesignSpline(obj.ViewObject)
+        obj.JoinTolerance = float(preferences.get("JoinTolerance") if join_tolerance is None else join_tolerance)
+        attach_view_provider(obj, "ViewProviderDesignSpline")
         doc.recompute()
     return obj
 
 
 _PIECE_INDEX = re.compile(r"\bpiece (\d+)")
+_MARK_INDEX = re.compile(r"\bmark (\d+)")
 
 
 def _describe(exc, labels):
-    """The exception's message; where it names a piece, add which source it is."""
+    """The exception's message for the Status a designer reads: pieces numbered from 1 (the
+    kernel counts from 0), and where it names a piece, which source that is."""
     message = str(exc).strip() or type(exc).__name__
     match = _PIECE_INDEX.search(message)
+    message = _PIECE_INDEX.sub(lambda m: f"piece {int(m.group(1)) + 1}", message)
+    message = _MARK_INDEX.sub(lambda m: f"mark {int(m.group(1)) + 1}", message)
     if match and labels:
         index = int(match.group(1))
         if index < len(labels) and labels[index] not in message:
-            message += f" (piece {index} is {labels[index]})"
+            message += f" (piece {index + 1} is {labels[index]})"
     return message

@@ -26,7 +26,7 @@ import FreeCAD
 import Part
 
 from ..errors import InputError
-from .base import FeatureProxy
+from .base import FeatureProxy, attach_view_provider
 from .undo import undo_step
 
 _PROPERTIES = (
@@ -154,9 +154,6 @@ def make_edit_polygon(doc, source, name="EditPolygon"):
         obj = doc.addObject("Part::FeaturePython", name)
         EditPolygon(obj)
         obj.Source = (obj_, [sub] if sub else [])
-        if FreeCAD.GuiUp:
-            from ..gui.design_view_providers import ViewProviderEditPolygon
-
-            ViewProviderEditPolygon(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderEditPolygon")
         doc.recompute()
     return obj

@@ -35,7 +35,7 @@ from ..errors import InputError
 from ..fair_blend import CONTINUITIES, METHODS, edge_end, fair_blend_solution
 from ..kernel import as_vector
 from ..monotone import check_monotone_curvature, monotone_curvature_solution
-from .base import FeatureProxy, set_if_changed
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 ENDS = ("auto", "first", "last")
@@ -65,6 +65,7 @@ class FairBlend(FeatureProxy):
     PROPERTIES = _PROPERTIES
     ENUMERATIONS = {"StartEnd": ENDS, "EndEnd": ENDS, "Continuity": CONTINUITIES, "Method": METHODS}
     OUTPUTS = ("Status", "Curvature")
+    VERDICTS = ("Curvature",)
 
     def onDocumentRestored(self, obj):
         # Read what version 1 stored before the enumerations are brought up to date.
@@ -84,13 +85,15 @@ class FairBlend(FeatureProxy):
             if obj.Continuity == "G2":
                 raise InputError("the paper's Algorithm 2 is G1 only: set Continuity to G1, or Method to fair")
             curve = monotone_curvature_solution(p0, t0, p1, t1, method=obj.Method).curve
-            set_if_changed(obj, "Curvature", check_monotone_curvature(curve).reason)
+            set_if_changed(obj, "Curvature", check_monotone_curvature(curve).summary)
             return curve.toShape()
         g2 = obj.Continuity == "G2"
         curve, report = fair_blend_solution(p0, t0, p1, t1, k0 if g2 else None, k1 if g2 else None, normal)
-        set_if_changed(obj, "Curvature", report.certificate.reason)
+        set_if_changed(obj, "Curvature", report.certificate.summary)
         if not report.monotone:
-            self._warning = report.reason
+            # the kernel's why, then the verdict on the curve shown in a designer's words
+            why = report.reason.split("; the fairest found instead")[0]
+            self._warning = f"{why}; shown instead: the fairest curve found, which is {report.certificate.summary}"
         return curve.toShape()
 
     def execute(self, obj):
@@ -144,10 +147,7 @@ def make_fair_blend(
             obj.StartDirection = FreeCAD.Vector(*as_vector(start_direction, "start_direction"))
         if end_direction is not None:
             obj.EndDirection = FreeCAD.Vector(*as_vector(end_direction, "end_direction"))
-        if FreeCAD.GuiUp:
-            from ..gui.view_providers import ViewProviderFairBlend
-
-            ViewProviderFairBlend(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderFairBlend")
         doc.recompute()
     return obj
 

@@ -16,7 +16,7 @@ import FreeCAD
 
 from ..kernel import as_vector
 from ..monotone import clamp_to_fair_locations, monotone_curvature_design
-from .base import FeatureProxy, set_if_changed
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 _PROPERTIES = (
@@ -58,10 +58,7 @@ def make_monotone_design(doc, first_vector, differences, knots=None, name="Monot
         obj.FirstVector = FreeCAD.Vector(*as_vector(first_vector, "first_vector"))
         obj.Differences = [FreeCAD.Vector(*as_vector(d, f"dV_{i}")) for i, d in enumerate(differences)]
         obj.Knots = [float(t) for t in knots] if knots is not None else []
-        if FreeCAD.GuiUp:
-            from ..gui.view_providers import ViewProviderMonotoneDesign
-
-            ViewProviderMonotoneDesign(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderMonotoneDesign")
         doc.recompute()
     return obj
 

@@ -19,7 +19,7 @@ from ..design import revolve_profile
 from ..errors import InputError
 from .basic_curve import global_placement
 from .edit_polygon import source_edge
-from .base import FeatureProxy
+from .base import FeatureProxy, attach_view_provider
 from .undo import undo_step
 
 _PROPERTIES = (
@@ -112,9 +112,6 @@ def make_profile_test(doc, profile, axis_point=None, axis_direction=None, name="
         obj.Profile = (source, [sub] if sub else [])
         obj.AxisPoint = FreeCAD.Vector(*axis_point)
         obj.AxisDirection = FreeCAD.Vector(*axis_direction)
-        if FreeCAD.GuiUp:
-            from ..gui.design_view_providers import ViewProviderProfileTest
-
-            ViewProviderProfileTest(obj.ViewObject)
+        attach_view_provider(obj, "ViewProviderProfileTest")
         doc.recompute()
     return obj

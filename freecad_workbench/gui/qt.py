@@ -55,3 +55,26 @@ QT_MAJOR = int(QtCore.qVersion().split(".")[0])
 def qt_module(name):
     """Another module of the same binding, e.g. qt_module("QtSvg")."""
     return importlib.import_module(BINDING + "." + name)
+
+
+_main_window = []  # the one wrapper of FreeCAD's main window this process keeps
+
+
+def main_window():
+    """FreeCAD's main window (a QMainWindow), or None.
+
+    Found among Qt's top-level widgets and kept: PySide invalidates the wrappers found
+    through a widget's wrapper (its QMdiArea, the tabs) when that wrapper goes. Not
+    FreeCADGui.getMainWindow(): FreeCAD releases the wrapper it gives at process exit, after
+    Python, which crashes where python hosts FreeCADGui (the tests) once a child was wrapped."""
+    if _main_window:
+        try:
+            _main_window[0].objectName()
+            return _main_window[0]
+        except RuntimeError:  # deleted
+            _main_window.clear()
+    for widget in QtWidgets.QApplication.topLevelWidgets():
+        if widget.metaObject().className() == "Gui::MainWindow":
+            _main_window.append(widget)
+            return widget
+    return None

@@ -1,71 +1,289 @@
-"""View providers of the FairSplines features (GUI only)."""
+"""View providers of every FairSplines feature (GUI only).
+
+One base, `ViewProvider`: the tree icon of the feature (named after its command), with an
+amber mark while its Status is a warning ("warning: ...": a shape, but short of what was
+asked) and a red mark while it holds an error (FreeCAD's own error mark shows too, since
+a failed recompute leaves the object invalid); double-click or Edit opens the feature's
+task panel (PANEL: "module:Class" under gui/panels/, imported when it opens). Nothing is
+stored in the file but properties.
+
+Features attach these through features.base.attach_view_provider only. Documents saved
+before the gui/ package was reorganised name some classes by their old modules; those
+modules (design_view_providers.py, blend_commands.py) re-export them from here.
+"""
+import importlib
+import os
+
+import FreeCAD
+import FreeCADGui
+
 from ..features.base import StatelessProxy
-from . import icon_path
+from . import command_name, icon_path
+
+translate = FreeCAD.Qt.translate
 
 
-class StatusIconViewProvider(StatelessProxy):
-    """Tree icon of a feature with a Status property: its icon (ICON, named after its
-    command), the amber-marked ICON + "Warning" while Status begins with "warning:" (a shape,
-    but short of what was asked), or the red-marked ICON + "Error" while Status holds an
-    error (the message is in the Status property and the report view)."""
+def local_shape(obj):
+    """obj's shape without its own Placement (the view provider's transform applies it)."""
+    shape = obj.Shape.copy()
+    shape.Placement = FreeCAD.Placement()
+    return shape
+
+
+class ViewProvider(StatelessProxy):
+    """Icon with warning and error marks, edit panel, nothing stored in the file."""
 
     ICON = "FairSplines"
+    ERROR_ICON = None  # default ICON + "Error"
+    PANEL = None  # "module:Class" under gui/panels, or None (nothing to edit but properties)
 
     def __init__(self, vobj):
         vobj.Proxy = self
 
     def attach(self, vobj):
         self.Object = vobj.Object
+        self.ViewObject = vobj
+        self.panel = None
+
+    def icon_name(self, obj):
+        return self.ICON
 
     def getIcon(self):
         obj = getattr(self, "Object", None)
-        status = getattr(obj, "Status", "ok") if obj is not None else "ok"
+        if obj is None:
+            return icon_path(self.ICON)
+        base = self.icon_name(obj)
+        status = getattr(obj, "Status", "ok")
         if status.startswith("warning:"):
-            return icon_path(self.ICON + "Warning")
+            warning = icon_path(base + "Warning")
+            return warning if os.path.exists(warning) else icon_path(base)
         if status != "ok":
-            return icon_path(self.ICON + "Error")
-        return icon_path(self.ICON)
+            return icon_path(self.ERROR_ICON or base + "Error")
+        return icon_path(base)
 
     def updateData(self, obj, prop):
-        if prop == "Status" and obj.ViewObject is not None:
+        if prop in ("Status", "Kind") and obj.ViewObject is not None:
             obj.ViewObject.signalChangeIcon()
 
     def onChanged(self, vobj, prop):
         pass
 
+    def make_panel(self, obj):
+        if self.PANEL is None:
+            return None
+        module, name = self.PANEL.split(":")
+        return getattr(importlib.import_module(module, __package__), name)(obj)
 
-class ViewProviderCsrFit(StatusIconViewProvider):
+    def setEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None  # Transform and the other modes: FreeCAD's own
+        panel = self.make_panel(vobj.Object)
+        if panel is None:
+            return False
+        self.panel = panel
+        FreeCADGui.Control.showDialog(panel)
+        return True
+
+    def unsetEdit(self, vobj, mode=0):
+        if mode != 0:
+            return None
+        panel, self.panel = getattr(self, "panel", None), None
+        if panel is not None and hasattr(panel, "finish"):
+            panel.finish()
+        FreeCADGui.Control.closeDialog()
+        return True
+
+    def doubleClicked(self, vobj):
+        if self.PANEL is None:
+            return False  # FreeCAD's default
+        FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 0)
+        return True
+
+    def setupContextMenu(self, vobj, menu):
+        if self.PANEL is None:
+            return
+        action = menu.addAction(translate("FairSplines", "Edit {}").format(vobj.Object.Label))
+        action.triggered.connect(lambda: FreeCADGui.ActiveDocument.setEdit(vobj.Object.Name, 0))
+
+
+StatusIconViewProvider = ViewProvider  # the name documents of csr fits and blends store
+
+
+class ViewProviderCsrFit(ViewProvider):
     ICON = "FairSplines_CsrFit"
 
 
-class ViewProviderFairBlend(StatusIconViewProvider):
+class ViewProviderFairBlend(ViewProvider):
     ICON = "FairSplines_MonotoneBlend"  # the command kept its name: toolbars people made keep it
 
 
 ViewProviderMonotoneBlend = ViewProviderFairBlend  # the name documents before fair blends store
 
 
-class ViewProviderMonotoneDesign(StatusIconViewProvider):
+class ViewProviderMonotoneDesign(ViewProvider):
     """Double-click (or Edit) opens the Monotone design task panel."""
 
     ICON = "FairSplines_MonotoneDesign"
+    PANEL = ".panels.monotone_design:MonotoneDesignTaskPanel"
 
-    def setEdit(self, vobj, mode=0):
-        if mode != 0:
-            return None
-        import FreeCADGui
 
-        from .monotone_commands import MonotoneDesignTaskPanel
+class ViewProviderBasicCurve(ViewProvider):
+    """Tree icon of its kind; double-click opens the dimensions panel."""
 
-        FreeCADGui.Control.showDialog(MonotoneDesignTaskPanel(vobj.Object))
-        return True
+    ICON = "FairSplines_CircleArc"
+    ERROR_ICON = "FairSplines_BasicCurveError"
+    PANEL = ".panels.basic_curve:BasicCurvePanel"
 
-    def unsetEdit(self, vobj, mode=0):
-        import FreeCADGui
+    def icon_name(self, obj):
+        kind = getattr(obj, "Kind", "")
+        return command_name(kind) if kind else self.ICON
 
-        FreeCADGui.Control.closeDialog()
-        return True
 
-    def doubleClicked(self, vobj):
-        vobj.Document.setEdit(vobj.Object.Name)
-        return True
+class PolygonViewProvider(ViewProvider):
+    """Draws the control polygon of the object's B-spline edge when ControlPolygon is on."""
+
+    POLYGON_DEFAULT = False
+
+    def __init__(self, vobj):
+        super().__init__(vobj)
+        self._ensure_properties(vobj)
+
+    def _ensure_properties(self, vobj):
+        if "ControlPolygon" not in vobj.PropertiesList:
+            vobj.addProperty("App::PropertyBool", "ControlPolygon", "Design",
+                             translate("FairSplines", "Show the control polygon of the curve"))
+            vobj.ControlPolygon = self.POLYGON_DEFAULT
+
+    def attach(self, vobj):
+        super().attach(vobj)
+        from pivy import coin
+
+        from .overlay import Overlay
+
+        self._ensure_properties(vobj)
+        self.overlay = Overlay("FairSplinesControlPolygon")
+        self.switch = coin.SoSwitch()
+        self.switch.addChild(self.overlay.root)
+        vobj.RootNode.addChild(self.switch)
+        self._update_polygon()
+
+    def _update_polygon(self):
+        vobj = getattr(self, "ViewObject", None)
+        if vobj is None or getattr(self, "switch", None) is None:
+            return
+        show = bool(getattr(vobj, "ControlPolygon", False))
+        self.switch.whichChild = 0 if show else -1
+        poles = []
+        if show:
+            obj = vobj.Object
+            if not obj.Shape.isNull() and len(obj.Shape.Edges) == 1:
+                curve = local_shape(obj).Edges[0].Curve
+                if hasattr(curve, "getPoles"):
+                    poles = curve.getPoles()
+        self.overlay.set_polygon(poles)
+
+    def updateData(self, obj, prop):
+        super().updateData(obj, prop)
+        if prop == "Shape":
+            self._update_polygon()
+
+    def onChanged(self, vobj, prop):
+        if prop in ("ControlPolygon", "Visibility"):
+            self._update_polygon()
+
+
+class ViewProviderDesignSpline(PolygonViewProvider):
+    """Double-click opens the Mark points panel."""
+
+    ICON = "FairSplines_DesignSpline"
+    PANEL = ".panels.mark_points:MarkPointsPanel"
+
+
+class ViewProviderEditPolygon(PolygonViewProvider):
+    """Shows its control polygon; double-click opens the Edit polygon panel."""
+
+    ICON = "FairSplines_EditPolygon"
+    POLYGON_DEFAULT = True
+    PANEL = ".panels.edit_polygon:EditPolygonPanel"
+
+
+class ViewProviderProfileTest(ViewProvider):
+    """The surface of revolution in a 'Zebra' display mode (the default): it reflects
+    black and white stripes (gui/zebra.py). The other display modes are Part's."""
+
+    ICON = "FairSplines_ProfileTest"
+    ZEBRA = "Zebra"
+
+    def __init__(self, vobj):
+        super().__init__(vobj)
+        self._ensure_properties(vobj)
+
+    def _ensure_properties(self, vobj):
+        if "Stripes" not in vobj.PropertiesList:
+            from .zebra import DEFAULT_STRIPES
+
+            vobj.addProperty("App::PropertyInteger", "Stripes", "Zebra",
+                             translate("FairSplines", "Number of black and white stripe pairs reflected"))
+            vobj.Stripes = DEFAULT_STRIPES
+
+    def attach(self, vobj):
+        super().attach(vobj)
+        from .zebra import ZebraNode
+
+        self._ensure_properties(vobj)
+        self.zebra = ZebraNode(vobj.Stripes)
+        self.meshed = None  # the shape the zebra mesh was made of
+        vobj.addDisplayMode(self.zebra.root, self.ZEBRA)
+
+    def getDisplayModes(self, vobj):
+        return [self.ZEBRA]
+
+    def getDefaultDisplayMode(self):
+        return self.ZEBRA
+
+    def setDisplayMode(self, mode):
+        if mode == self.ZEBRA:
+            self.update_zebra()
+        return mode
+
+    def mesh_zebra(self, obj):
+        """Mesh the object's surface (in its own placement) into the zebra node."""
+        shape = obj.Shape
+        self.zebra.update(None if shape.isNull() or not shape.Faces else local_shape(obj).Faces[0].Surface)
+
+    def update_zebra(self, force=False):
+        """Re-mesh the zebra node from the object's surface if the shape changed."""
+        obj = getattr(self, "Object", None)
+        if obj is None or not hasattr(self, "zebra"):
+            return
+        shape = obj.Shape
+        if not force and self.meshed is not None and self.meshed.isEqual(shape):
+            return
+        self.mesh_zebra(obj)
+        self.meshed = shape
+
+    def updateData(self, obj, prop):
+        super().updateData(obj, prop)
+        if prop == "Shape" and getattr(self, "ViewObject", None) is not None:
+            if self.ViewObject.DisplayMode == self.ZEBRA:
+                self.update_zebra()
+
+    def onChanged(self, vobj, prop):
+        if prop == "Stripes" and hasattr(self, "zebra"):
+            self.zebra.set_stripes(max(1, vobj.Stripes))
+        elif prop == "DisplayMode" and vobj.DisplayMode == self.ZEBRA:
+            self.update_zebra()
+
+
+class ViewProviderBlendShape(ViewProviderProfileTest):
+    """The blended shell in the 'Zebra' display mode (the default; gui/zebra.py), every patch
+    meshed, so that the stripes show how the basic shape, the transition and the ring join.
+    Double-click opens the task panel."""
+
+    ICON = "FairSplines_BlendBasicShape"
+    PANEL = ".panels.blend_shape:BlendShapePanel"
+
+    def mesh_zebra(self, obj):
+        from .zebra import update_zebra_faces
+
+        update_zebra_faces(self.zebra, [] if obj.Shape.isNull() else local_shape(obj).Faces)

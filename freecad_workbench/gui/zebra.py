@@ -12,7 +12,8 @@ import math
 
 import numpy as np
 
-DEFAULT_STRIPES = 16
+from .. import preferences
+
 U_SAMPLES = 400  # along the profile, split over the knot spans
 V_SAMPLES = 128  # around the axis
 MIN_PER_SPAN = 4
@@ -71,10 +72,17 @@ def _fill_missing(normals):
     normals[np.isnan(normals)] = 0.0
 
 
-def stripe_image(stripes=DEFAULT_STRIPES, size=256):
+def __getattr__(name):
+    # DEFAULT_STRIPES is the ZebraStripes preference, read each time it is asked for.
+    if name == "DEFAULT_STRIPES":
+        return preferences.get("ZebraStripes")
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def stripe_image(stripes=None, size=256):
     """A size x size grey image (bytes, one byte per texel) of `stripes` vertical black and
-    white stripes: the environment the surface reflects."""
-    stripes = max(1, int(stripes))
+    white stripes: the environment the surface reflects (None: the ZebraStripes preference)."""
+    stripes = max(1, int(preferences.get("ZebraStripes") if stripes is None else stripes))
     x = np.arange(size)
     row = np.where((x * 2 * stripes // size) % 2 == 0, 255, 0).astype(np.uint8)
     return np.tile(row, (size, 1)).tobytes(), size
@@ -83,7 +91,7 @@ def stripe_image(stripes=DEFAULT_STRIPES, size=256):
 class ZebraNode:
     """A coin separator drawing a surface with zebra shading; `update` re-meshes it."""
 
-    def __init__(self, stripes=DEFAULT_STRIPES):
+    def __init__(self, stripes=None):
         from pivy import coin
 
         self.coin = coin
@@ -106,7 +114,7 @@ class ZebraNode:
         self.faces = coin.SoIndexedFaceSet()
         for node in (hints, material, self.texture, self.environment, self.coords, self.normals, binding, self.faces):
             self.root.addChild(node)
-        self.set_stripes(stripes)
+        self.set_stripes(preferences.get("ZebraStripes") if stripes is None else stripes)
         self.vertex_count = 0
 
     def set_stripes(self, stripes):
@@ -134,3 +142,31 @@ class ZebraNode:
         self.faces.coordIndex.setValues(0, len(index), index)
         self.faces.normalIndex.setValues(0, len(index), index)
         self.vertex_count = len(points)
+
+
+# Zebra mesh of each face of a shell (a patch): samples per face, at least 4 per knot span.
+FACE_SAMPLES = 12
+
+
+def update_zebra_faces(node, faces, samples=FACE_SAMPLES):
+    """Mesh every face's surface into one ZebraNode, or clear it."""
+    if not faces:
+        node.update(None)
+        return
+    points, normals, index, offset = [], [], [], 0
+    for face in faces:
+        p, n, quads, _ = zebra_mesh(face.Surface, samples, samples)
+        if face.Orientation == "Reversed":
+            n = -n
+        points.append(p)
+        normals.append(n)
+        index.append(np.c_[quads + offset, -np.ones(len(quads), dtype=int)].ravel())
+        offset += len(p)
+    points, normals = np.concatenate(points), np.concatenate(normals)
+    index = np.concatenate(index).tolist()
+    node.clear()
+    node.coords.point.setValues(0, len(points), points.tolist())
+    node.normals.vector.setValues(0, len(normals), normals.tolist())
+    node.faces.coordIndex.setValues(0, len(index), index)
+    node.faces.normalIndex.setValues(0, len(index), index)
+    node.vertex_count = len(points)

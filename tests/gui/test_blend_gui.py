@@ -80,25 +80,11 @@ def new_blend(doc):
     return created[0]
 
 
-def test_command_has_a_toolbar_a_submenu_and_its_own_icons():
-    from freecad_workbench.gui.qt import qt_module
-
-    QtSvg = qt_module("QtSvg")
-
-    from freecad_workbench.gui import blend_commands, icon_path
-
-    g = gui()
-    g.activateWorkbench("FairSplinesWorkbench")
-    g.updateGui()
-    assert g.activeWorkbench().getToolbarItems()["FairSplines blend"] == [NAME]
-    assert NAME in g.listCommands() and blend_commands.COMMANDS == (NAME,)
-    for icon in (NAME, NAME + "Error"):
-        assert os.path.isfile(icon_path(icon)) and QtSvg.QSvgRenderer(icon_path(icon)).isValid()
-    assert blend_commands.BlendBasicShapeCommand().GetResources()["Pixmap"] == icon_path(NAME)
 
 
 def test_command_creates_a_blend_in_one_undo_step_and_opens_its_panel(scene):
-    from freecad_workbench.gui.blend_commands import BlendShapePanel, ViewProviderBlendShape
+    from freecad_workbench.gui.panels.blend_shape import BlendShapePanel
+    from freecad_workbench.gui.view_providers import ViewProviderBlendShape
 
     doc = scene
     blend = new_blend(doc)
@@ -195,7 +181,7 @@ def test_panel_cancel_restores_the_blend(scene):
 
 def test_double_click_opens_the_panel_and_error_shows_the_error_icon(scene):
     from freecad_workbench.gui import icon_path
-    from freecad_workbench.gui.blend_commands import BlendShapePanel
+    from freecad_workbench.gui.panels.blend_shape import BlendShapePanel
 
     doc = scene
     blend = new_blend(doc)
@@ -216,7 +202,7 @@ def test_double_click_opens_the_panel_and_error_shows_the_error_icon(scene):
 
 
 def test_saved_blend_reopens_with_its_zebra_view(scene, tmp_path):
-    from freecad_workbench.gui.blend_commands import ViewProviderBlendShape
+    from freecad_workbench.gui.view_providers import ViewProviderBlendShape
 
     doc = scene
     blend = new_blend(doc)

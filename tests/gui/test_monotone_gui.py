@@ -10,10 +10,9 @@ import pytest
 import FreeCAD
 
 import freecad_workbench as fw
-from freecad_workbench.gui import comb, icon_path
+from freecad_workbench.gui import comb, icon_path, plot
 
 V = FreeCAD.Vector
-COMMANDS = ("FairSplines_MonotoneBlend", "FairSplines_CheckMonotone", "FairSplines_MonotoneDesign")
 
 
 def run(name):
@@ -61,13 +60,18 @@ def scene(doc):
     import matplotlib.pyplot as plt
 
     plt.close("all")
+    plot.close_plot_tabs()
 
 
 def commands():
-    """The command module (GUI only: imported once the GUI is up)."""
-    from freecad_workbench.gui import monotone_commands
+    """What these tests use of the GUI modules (imported once the GUI is up)."""
+    from types import SimpleNamespace
 
-    return monotone_commands
+    from freecad_workbench.gui.commands import analysis
+    from freecad_workbench.gui.panels import monotone_design
+
+    return SimpleNamespace(check_links=analysis.check_links, active_design_panel=monotone_design.active_design_panel,
+                           MonotoneDesignTaskPanel=monotone_design.MonotoneDesignTaskPanel)
 
 
 def pick(doc, obj, sub, point):
@@ -76,24 +80,6 @@ def pick(doc, obj, sub, point):
     FreeCADGui.Selection.addSelection(doc.Name, obj.Name, sub, *point)
 
 
-def test_commands_have_a_toolbar_a_submenu_and_their_own_icons():
-    import FreeCADGui
-    from freecad_workbench.gui.qt import qt_module
-
-    QtSvg = qt_module("QtSvg")
-
-    FreeCADGui.activateWorkbench("FairSplinesWorkbench")
-    assert FreeCADGui.activeWorkbench().getToolbarItems()["FairSplines monotone"] == list(COMMANDS)
-    classes = (commands().FairBlendCommand, commands().CheckMonotoneCommand,
-               commands().MonotoneDesignCommand)
-    for name, cls in zip(COMMANDS, classes):
-        assert name in FreeCADGui.listCommands()
-        resources = cls().GetResources()
-        assert resources["Pixmap"] == icon_path(name) and os.path.isfile(resources["Pixmap"])
-        assert QtSvg.QSvgRenderer(resources["Pixmap"]).isValid()
-        assert resources["MenuText"] and resources["ToolTip"]
-    for error_icon in ("FairSplines_MonotoneBlendError", "FairSplines_MonotoneBlendWarning", "FairSplines_MonotoneDesignError"):
-        assert QtSvg.QSvgRenderer(icon_path(error_icon)).isValid()
 
 
 def test_blend_command_bridges_the_picked_ends_of_two_edges(scene, monkeypatch):
@@ -212,14 +198,14 @@ def test_check_command_reports_and_plots_with_the_extremum_marked(scene, artifac
     pick(doc, blend, "Edge1", (10, 2, 0))
     pick(doc, arch, "Edge1", (30, -30, 0))
     assert is_active("FairSplines_CheckMonotone")
-    figures = set(plt.get_fignums())
+    before = plot.figures()
     spy = ConsoleSpy(FreeCAD.Console)
     monkeypatch.setattr(FreeCAD, "Console", spy)
     run("FairSplines_CheckMonotone")
     monkeypatch.undo()
-    new = set(plt.get_fignums()) - figures
+    new = [f for f in plot.figures() if f not in before]
     assert len(new) == 1
-    fig = plt.figure(new.pop())
+    (fig,) = new  # a tab of the main window
     labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
     assert labels[:2] == [f"{blend.Label}.Edge1", f"{arch.Label}.Edge1"]
     assert labels[2] == f"{arch.Label}.Edge1: curvature maximum"
@@ -251,14 +237,14 @@ def test_design_panel_keeps_every_difference_in_its_fair_location(scene, artifac
     panel = commands().active_design_panel()
     assert isinstance(panel, commands().MonotoneDesignTaskPanel) and panel.obj is design
     assert not is_active("FairSplines_MonotoneDesign")  # one panel at a time
-    assert panel.table.rowCount() == 4 and "Every difference" in panel.status.text()
+    assert panel.table.rowCount() == 4 and "No step needed moving" in panel.status.text()
     first_poles = poles(design)
     # Type a difference that would make |P''| grow: it is pulled back at once.
     panel.table.item(3, 0).setText("5")
     FreeCADGui.updateGui()
     shown = float(panel.table.item(3, 0).text())
     assert shown != 5.0 and float(panel.table.item(3, 2).text()) > 0
-    assert "dV2" in panel.status.text()
+    assert panel.status.text().startswith("Steps moved") and "3" in panel.status.text()  # dV_2: step 3
     assert design.Differences[2].x == pytest.approx(shown, rel=1e-5)  # shown with 6 digits
     first, diffs = panel.vectors()  # exact behind the digits: fair as they stand
     assert diffs[2] == (design.Differences[2].x, design.Differences[2].y)

@@ -1,6 +1,7 @@
 """Monotonic-curvature cubics through the macro API, judged by OCCT's own evaluation of the
 returned Part curves (value, getD1, tangent, curvature), independently of the construction."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -346,3 +347,29 @@ def test_curvature_variation_vanishes_for_circles_only():
     # Scale-free: the same curve 1000 times larger.
     big = fw.monotone_curvature_spline((0, 0), (1000, 0), (1000, 500), (0.8, 0.6), method="paper")
     assert fw.curvature_variation(big) == pytest.approx(fw.curvature_variation(fairest), rel=1e-9)
+
+
+def test_the_summary_says_what_the_curvature_does_in_a_designers_words():
+    """The GUI shows report.summary: the extremum OCCT finds by dense sampling, in 1/mm, spans
+    counted from 1, and none of the proof's symbols (str(report) keeps those)."""
+    curve = Part.BSplineCurve()
+    curve.buildFromPoles([V(0, 0, 0), V(10, 0, 0), V(20, 10, 0), V(20, 20, 0), V(10, 30, 0)])
+    report = fw.check_monotone_curvature(curve)
+    u = np.linspace(curve.FirstParameter, curve.LastParameter, 20001)
+    kappa = np.array([curve.curvature(float(t)) for t in u])
+    maxima = [i for i in range(1, len(u) - 1) if kappa[i - 1] < kappa[i] >= kappa[i + 1]]
+    minima = [i for i in range(1, len(u) - 1) if kappa[i - 1] > kappa[i] <= kappa[i + 1]]
+    assert maxima  # an interior maximum: the curve is not monotone
+    peak = min(maxima + minima)  # the summary names the first extremum along the curve
+    assert peak in maxima
+    text = report.summary
+    assert text.startswith("not monotone: the curvature has a maximum of ")
+    value, at = re.search(r"maximum of ([0-9.e+-]+) 1/mm at parameter ([0-9.e+-]+) \(span 1\)", text).groups()
+    assert float(value) == pytest.approx(kappa[peak], rel=1e-6)
+    assert float(at) == pytest.approx(u[peak], abs=2 * (u[1] - u[0]))
+    for jargon in ("Bernstein", "kappa", "N(", "span 0"):
+        assert jargon not in text
+    assert "Bernstein" in str(report) or "N(u" in str(report)  # the proof is still there
+
+    arc = Part.ArcOfCircle(Part.Circle(V(), V(0, 0, 1), 5), 0, 2).toShape()
+    assert fw.check_monotone_curvature(arc).summary.startswith("constant curvature 0.2 1/mm")

@@ -8,7 +8,7 @@ import FreeCAD
 import Part
 
 import freecad_workbench as fw
-from freecad_workbench.gui.comb import AUTO_LENGTH, auto_scale, comb_lines
+from freecad_workbench.gui.comb import AUTO_LENGTH, REACH, auto_scale, comb_lines
 
 S_DATA = [(0, 0, 0), (10, 6, 0), (20, 8, 0), (30, 4, 0), (40, -4, 0), (50, -8, 0), (60, -6, 0), (70, 0, 0)]
 
@@ -65,14 +65,25 @@ def test_straight_edge_has_a_flat_comb():
     assert auto_scale([edge]) == 1.0
 
 
-def test_auto_scale_makes_the_longest_tooth_a_quarter_of_the_size():
-    edge = fw.csr_spline(S_DATA).toShape()
+@pytest.mark.parametrize("shape", ["s-curve", "quarter-circle"])
+def test_auto_scale_makes_the_longest_tooth_a_quarter_of_the_size_at_most(shape):
+    """The longest tooth is a quarter of the size unless that would take a tooth REACH of
+    the way to its centre of curvature: on the S-curve the reach rule decides, on a
+    quarter circle (radius 0.71 of the box diagonal) the size rule."""
+    if shape == "s-curve":
+        edge = fw.csr_spline(S_DATA).toShape()
+    else:
+        edge = Part.Edge(Part.Circle(FreeCAD.Vector(), FreeCAD.Vector(0, 0, 1), 10.0), 0.0, math.pi / 2)
     scale = auto_scale([edge], n=256)
     comb = comb_lines(edge, scale, n=256)
-    longest = np.linalg.norm(comb.tip - comb.base, axis=1).max()
+    length = np.linalg.norm(comb.tip - comb.base, axis=1)
     diagonal = np.linalg.norm(comb.base.max(axis=0) - comb.base.min(axis=0))
     assert diagonal == pytest.approx(edge.BoundBox.DiagonalLength, rel=0.05)
-    assert longest == pytest.approx(AUTO_LENGTH * diagonal, rel=1e-9)
+    kappa_max = np.abs(comb.kappa).max()
+    assert length.max() == pytest.approx(min(AUTO_LENGTH * diagonal, REACH / kappa_max), rel=1e-9)
+    reach_decides = REACH / kappa_max < AUTO_LENGTH * diagonal
+    assert reach_decides == (shape == "s-curve")
+    assert (length * np.abs(comb.kappa) <= REACH * (1 + 1e-12)).all()  # no tooth past REACH of its radius
 
 
 def test_comb_of_a_trimmed_edge_covers_only_the_edge():
@@ -97,11 +108,12 @@ def test_curvature_plot_writes_a_png_with_one_line_per_curve(tmp_path, artifacts
     ax = fig.axes[0]
     lines = [line for line in ax.get_lines() if line.get_label() in ("csr-spline", "classic")]
     assert [line.get_label() for line in lines] == ["csr-spline", "classic"]
-    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["csr-spline", "classic"]
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend == ["csr-spline", "classic", "curvature maximum", "curvature minimum"]
     profile = fw.curvature_profile(csr, 1024)
     np.testing.assert_array_equal(lines[0].get_xdata(), profile.s)
     np.testing.assert_array_equal(lines[0].get_ydata(), profile.kappa)
-    assert ax.get_ylabel() == "signed curvature"
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("arc length (mm)", "signed curvature (1/mm)")
     image = matplotlib.image.imread(str(path))
     assert image.shape[:2] == (450, 800)
     assert (image[..., :3] < 0.9).any()  # something drawn on the white page

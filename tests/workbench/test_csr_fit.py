@@ -9,6 +9,7 @@ import Part
 import Points
 import Sketcher  # noqa: F401  (registers Sketcher::SketchObject)
 
+from tests.scenes import assert_failed_like_freecad
 import freecad_workbench as fw
 from freecad_workbench.features.csr_fit import CsrFit, collect_points, make_csr_fit
 
@@ -200,9 +201,35 @@ def test_save_close_reopen_recompute_gives_identical_poles(doc, tmp_path):
         FreeCAD.closeDocument(reopened.Name)
 
 
-def test_old_document_without_new_properties_loads_and_migrates(doc, tmp_path):
+def test_curvature_tolerance_shows_epsilon_readably_and_sets_it(doc):
+    wire = line_and_arc(doc)
+    fit = make_csr_fit(doc, [(wire, ("Edge1", "Edge2"))], samples=31)
+    assert fit.CurvatureTolerance == "1e-09" and fit.Epsilon == 1e-9  # the property editor showed 0.00
+    assert fit.getEditorMode("Epsilon") == ["Hidden"] and fit.getEditorMode("CurvatureTolerance") == []
+    fit.CurvatureTolerance = "1e-2"
+    doc.recompute()
+    assert fit.Epsilon == 1e-2 and fit.Status == "ok"
+    points, _ = collect_points(fit.Sources, fit.Samples)
+    np.testing.assert_array_equal(poles(fit), poles(fw.csr_spline(points, epsilon=1e-2)))
+    fit.Epsilon = 1e-6  # a macro sets the number: the text follows
+    assert fit.CurvatureTolerance == "1e-06"
+    fit.CurvatureTolerance = "small"
+    doc.recompute()
+    assert_failed_like_freecad(fit, "CurvatureTolerance is not a number: 'small'")
+
+
+def test_samples_shows_only_where_an_edge_is_sampled(doc):
     fit = make_csr_fit(doc, vertices(doc))
-    for name in ("Version", "Status", "Samples"):
+    assert fit.getEditorMode("Samples") == ["Hidden"]  # points are taken as they are
+    wire = line_and_arc(doc)
+    fit.Sources = [(wire, ["Edge1", "Edge2"])]
+    doc.recompute()
+    assert fit.getEditorMode("Samples") == []
+
+
+def test_old_document_without_new_properties_loads_and_migrates(doc, tmp_path):
+    fit = make_csr_fit(doc, vertices(doc), epsilon=1e-7)
+    for name in ("Version", "Status", "Samples", "CurvatureTolerance"):
         fit.removeProperty(name)
     path = str(tmp_path / "old.FCStd")
     doc.saveAs(path)
@@ -211,6 +238,7 @@ def test_old_document_without_new_properties_loads_and_migrates(doc, tmp_path):
     try:
         fit = reopened.getObject("CsrFit")
         assert (fit.Version, fit.Status, fit.Samples) == (CsrFit.VERSION, "ok", 50)
+        assert fit.CurvatureTolerance == "1e-07" and fit.Epsilon == 1e-7
         fit.touch()
         reopened.recompute()
         assert fit.Status == "ok" and len(fit.Shape.Edges) == 1
@@ -324,7 +352,7 @@ def test_bad_input_puts_the_feature_in_error_state_and_keeps_last_good_shape(doc
     assert message in fit.Status, fit.Status
     assert fit.Status != "ok"
     np.testing.assert_array_equal(poles(fit), good)  # last good shape kept
-    assert fit.isValid() and "Invalid" not in fit.State and "Touched" not in fit.State
+    assert_failed_like_freecad(fit, message)
     assert box.Shape.BoundBox.XLength == pytest.approx(42)  # the rest of the document recomputed
 
     fit.Sources = [(o, "") for o in vertices(doc)]  # good data again

@@ -439,7 +439,7 @@ FairBlend fairBlend(const BlendEnds& ends) {
   out.kappa1 = sign * out.certificate.kappaEnd;
   out.variation = curvatureVariation(out.curve);
   if (out.monotone) out.reason += "; curvature " + describeTrend(out.certificate) + ", certified";
-  else out.reason += "; not monotone: " + out.certificate.reason;
+  else out.reason += "; " + out.certificate.reason;  // the certificate says "not monotone: ..."
   return out;
 }
 

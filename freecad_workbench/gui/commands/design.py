@@ -13,15 +13,13 @@ FairSplines_ProfileTest   revolve the selected profile, with zebra shading
 import FreeCAD
 import FreeCADGui
 
-from ..features.basic_curve import KINDS, is_basic_curve
-from ..features.design_spline import is_design_spline
-from ..features.edit_polygon import is_edit_polygon
-from . import icon_path
-from .commands import selected_links
+from ...features.basic_curve import KINDS, is_basic_curve
+from ...features.design_spline import is_design_spline
+from ...features.edit_polygon import is_edit_polygon
+from .. import command_name
+from .common import QT_TRANSLATE_NOOP, doc_code, edit_later, link_code, new_object, one_edge, resources, selected_links
 
-QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
-
-KIND_COMMANDS = {kind: "FairSplines_" + kind.title().replace(" ", "") for kind in KINDS}
+KIND_COMMANDS = {kind: command_name(kind) for kind in KINDS}
 GROUP = "FairSplines_BasicCurves"
 DESIGN_COMMANDS = (
     GROUP,
@@ -30,63 +28,37 @@ DESIGN_COMMANDS = (
     "FairSplines_EditPolygon",
     "FairSplines_ProfileTest",
 )
+SECTION = "Design with basic curves"
 
 _KIND_TIPS = {
-    "Line segment": "A line segment, to join to curved pieces",
-    "Circle arc": "A circle arc (kept exact in a design)",
-    "Ellipse arc": "An ellipse arc (kept exact in a design)",
-    "Parabola arc": "A parabola arc (kept exact in a design)",
-    "Hyperbola arc": "A hyperbola arc (kept exact in a design)",
-    "Archimedean spiral": "An Archimedean spiral (approximated to about 1e-8 in a design)",
-    "Circle involute": "An involute of a circle (approximated closely in a design)",
-    "Rational cubic": "A rational Bezier curve of degree at most 3 (kept exact in a design)",
+    "Line segment": QT_TRANSLATE_NOOP("FairSplines_LineSegment", "A line segment, to join to curved pieces"),
+    "Circle arc": QT_TRANSLATE_NOOP("FairSplines_CircleArc", "A circle arc (kept exact in a design)"),
+    "Ellipse arc": QT_TRANSLATE_NOOP("FairSplines_EllipseArc", "An ellipse arc (kept exact in a design)"),
+    "Parabola arc": QT_TRANSLATE_NOOP("FairSplines_ParabolaArc", "A parabola arc (kept exact in a design)"),
+    "Hyperbola arc": QT_TRANSLATE_NOOP("FairSplines_HyperbolaArc", "A hyperbola arc (kept exact in a design)"),
+    "Archimedean spiral": QT_TRANSLATE_NOOP(
+        "FairSplines_ArchimedeanSpiral", "An Archimedean spiral (followed to about 1e-8 of its size in a design)"),
+    "Circle involute": QT_TRANSLATE_NOOP(
+        "FairSplines_CircleInvolute", "An involute of a circle (followed closely in a design)"),
+    "Rational cubic": QT_TRANSLATE_NOOP(
+        "FairSplines_RationalCubic", "A rational Bezier curve of degree at most 3 (kept exact in a design)"),
 }
-
-
-def _element(sub):
-    return sub.rsplit(".", 1)[-1] if sub else ""
-
-
-def _one_edge(obj, sub):
-    """Whether (obj, sub) names one edge: an EdgeN, or a whole object with one edge."""
-    element = _element(sub)
-    if element:
-        return element.startswith("Edge")
-    shape = getattr(obj, "Shape", None)
-    return shape is not None and not shape.isNull() and len(shape.Edges) == 1
+_KIND_MENU = {
+    "Line segment": QT_TRANSLATE_NOOP("FairSplines_LineSegment", "Line segment"),
+    "Circle arc": QT_TRANSLATE_NOOP("FairSplines_CircleArc", "Circle arc"),
+    "Ellipse arc": QT_TRANSLATE_NOOP("FairSplines_EllipseArc", "Ellipse arc"),
+    "Parabola arc": QT_TRANSLATE_NOOP("FairSplines_ParabolaArc", "Parabola arc"),
+    "Hyperbola arc": QT_TRANSLATE_NOOP("FairSplines_HyperbolaArc", "Hyperbola arc"),
+    "Archimedean spiral": QT_TRANSLATE_NOOP("FairSplines_ArchimedeanSpiral", "Archimedean spiral"),
+    "Circle involute": QT_TRANSLATE_NOOP("FairSplines_CircleInvolute", "Circle involute"),
+    "Rational cubic": QT_TRANSLATE_NOOP("FairSplines_RationalCubic", "Rational cubic"),
+}
 
 
 def usable_piece(obj, sub):
     """Whether a selection entry can be a piece of a design (a quick check: an edge or a
     BasicCurve; whether the edge is a line or conic is checked when the design computes)."""
-    return is_basic_curve(obj) or _one_edge(obj, sub)
-
-
-def _edit(obj):
-    FreeCADGui.doCommand("import FreeCADGui")
-    FreeCADGui.doCommand(
-        f"FreeCADGui.getDocument({obj.Document.Name!r}).setEdit({obj.Name!r}, 0)")
-
-
-def _edit_later(obj):
-    """Open obj's task panel once the command has returned: FreeCAD closes the command's
-    own undo step then, so the panel's changes become an undo step of their own."""
-    from .qt import QtCore
-
-    doc_name, name = obj.Document.Name, obj.Name
-
-    def edit():
-        doc = FreeCAD.listDocuments().get(doc_name)
-        target = doc.getObject(name) if doc is not None else None
-        if target is not None and not FreeCADGui.Control.activeDialog():
-            _edit(target)
-
-    QtCore.QTimer.singleShot(0, edit)
-
-
-def _new_object(doc, before):
-    created = [o for o in doc.Objects if o.Name not in before]
-    return created[-1] if created else None
+    return is_basic_curve(obj) or one_edge(obj, sub)
 
 
 class BasicCurveCommand:
@@ -97,11 +69,7 @@ class BasicCurveCommand:
         self.name = KIND_COMMANDS[kind]
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(self.name),
-            "MenuText": QT_TRANSLATE_NOOP(self.name, self.kind.capitalize()),
-            "ToolTip": QT_TRANSLATE_NOOP(self.name, _KIND_TIPS[self.kind] + ".\nSet its dimensions in the panel."),
-        }
+        return resources(self.name, _KIND_MENU[self.kind], _KIND_TIPS[self.kind], SECTION)
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -111,10 +79,10 @@ class BasicCurveCommand:
         before = {o.Name for o in doc.Objects}
         FreeCADGui.doCommand("import FreeCAD")
         FreeCADGui.doCommand("from freecad_workbench.features.basic_curve import make_basic_curve")
-        FreeCADGui.doCommand(f"make_basic_curve(FreeCAD.getDocument({doc.Name!r}), {self.kind!r})")
-        obj = _new_object(doc, before)
+        FreeCADGui.doCommand(f"make_basic_curve({doc_code(doc)}, {self.kind!r})")
+        obj = new_object(doc, before)
         if obj is not None:
-            _edit_later(obj)
+            edit_later(obj)
 
 
 class BasicCurvesGroup:
@@ -127,11 +95,12 @@ class BasicCurvesGroup:
         return KINDS.index("Circle arc")
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(GROUP),
-            "MenuText": QT_TRANSLATE_NOOP(GROUP, "Basic curve"),
-            "ToolTip": QT_TRANSLATE_NOOP(GROUP, "Create a basic curve: line, conic arc, spiral, involute, rational cubic"),
-        }
+        return resources(
+            GROUP,
+            QT_TRANSLATE_NOOP(GROUP, "Basic curve"),
+            QT_TRANSLATE_NOOP(GROUP, "Create a basic curve: line, conic arc, spiral, involute, rational cubic"),
+            SECTION,
+        )
 
     def IsActive(self):
         return FreeCAD.ActiveDocument is not None
@@ -141,15 +110,17 @@ class DesignSplineCommand:
     NAME = "FairSplines_DesignSpline"
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(self.NAME),
-            "MenuText": QT_TRANSLATE_NOOP(self.NAME, "Design spline"),
-            "ToolTip": QT_TRANSLATE_NOOP(
-                self.NAME,
-                "One C2 spline through the selected basic curves, in pick order: edges of sketches or Part\n"
-                "objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.",
+        return resources(
+            self.NAME,
+            QT_TRANSLATE_NOOP("FairSplines_DesignSpline", "Design spline"),
+            QT_TRANSLATE_NOOP(
+                "FairSplines_DesignSpline",
+                "One smooth (C2) spline through the selected basic curves, in pick order: edges of\n"
+                "sketches or Part objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.",
             ),
-        }
+            SECTION,
+            accel="F, D",
+        )
 
     def IsActive(self):
         links = selected_links()
@@ -160,20 +131,15 @@ class DesignSplineCommand:
         if not links:
             return
         doc = links[0][0].Document
-        pieces = "[" + ", ".join(f"({code}, None)" for code in _link_codes(links)) + "]"
+        pieces = "[" + ", ".join(f"({link_code(o, s)}, None)" for o, s in links) + "]"
         before = {o.Name for o in doc.Objects}
         FreeCADGui.doCommand("import FreeCAD")
         FreeCADGui.doCommand("from freecad_workbench.features.design_spline import make_design_spline")
-        FreeCADGui.doCommand(f"make_design_spline(FreeCAD.getDocument({doc.Name!r}), {pieces})")
+        FreeCADGui.doCommand(f"make_design_spline({doc_code(doc)}, {pieces})")
         FreeCADGui.Selection.clearSelection()
-        obj = _new_object(doc, before)
+        obj = new_object(doc, before)
         if obj is not None:
-            _edit_later(obj)
-
-
-def _link_codes(links):
-    """Python source of each (obj, sub), for the macro recording."""
-    return [f"(FreeCAD.getDocument({o.Document.Name!r}).getObject({o.Name!r}), {s!r})" for o, s in links]
+            edit_later(obj)
 
 
 def _selected_design():
@@ -189,12 +155,15 @@ class MarkPointsCommand:
     NAME = "FairSplines_MarkPoints"
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(self.NAME),
-            "MenuText": QT_TRANSLATE_NOOP(self.NAME, "Mark points"),
-            "ToolTip": QT_TRANSLATE_NOOP(
-                self.NAME, "Move, add and remove the marks of the selected Design spline with sliders (live preview)"),
-        }
+        return resources(
+            self.NAME,
+            QT_TRANSLATE_NOOP("FairSplines_MarkPoints", "Mark points"),
+            QT_TRANSLATE_NOOP(
+                "FairSplines_MarkPoints",
+                "Move, add and remove the points marked on the pieces of the selected Design spline,\n"
+                "with sliders (live preview)"),
+            SECTION,
+        )
 
     def IsActive(self):
         return _selected_design() is not None and not FreeCADGui.Control.activeDialog()
@@ -203,7 +172,7 @@ class MarkPointsCommand:
         obj = _selected_design()
         if obj is not None:
             FreeCADGui.Selection.clearSelection()
-            _edit_later(obj)
+            edit_later(obj)
 
 
 def _selected_spline():
@@ -212,22 +181,25 @@ def _selected_spline():
     if len(links) != 1:
         return None
     obj, sub = links[0]
-    return (obj, sub) if _one_edge(obj, sub) else None
+    return (obj, sub) if one_edge(obj, sub) else None
 
 
 class EditPolygonCommand:
     NAME = "FairSplines_EditPolygon"
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(self.NAME),
-            "MenuText": QT_TRANSLATE_NOOP(self.NAME, "Edit polygon"),
-            "ToolTip": QT_TRANSLATE_NOOP(
-                self.NAME,
-                "Move control points of the selected spline (a Design spline, csr fit or any B-spline edge).\n"
-                "The edited curve follows the design; a moved pole changes only the four spans it supports.",
+        return resources(
+            self.NAME,
+            QT_TRANSLATE_NOOP("FairSplines_EditPolygon", "Edit control points"),
+            QT_TRANSLATE_NOOP(
+                "FairSplines_EditPolygon",
+                "Move control points of the selected spline (a Design spline, a spline through points or any\n"
+                "B-spline edge). The edited curve follows the design; a moved point changes the curve only\n"
+                "near it (the four spans it supports).",
             ),
-        }
+            SECTION,
+            accel="F, E",
+        )
 
     def IsActive(self):
         return _selected_spline() is not None and not FreeCADGui.Control.activeDialog()
@@ -239,34 +211,35 @@ class EditPolygonCommand:
         obj, sub = link
         FreeCADGui.Selection.clearSelection()
         if is_edit_polygon(obj):
-            _edit_later(obj)
+            edit_later(obj)
             return
         doc = obj.Document
-        source = f"FreeCAD.getDocument({doc.Name!r}).getObject({obj.Name!r})"
+        source = link_code(obj)
         before = {o.Name for o in doc.Objects}
         FreeCADGui.doCommand("import FreeCAD")
         FreeCADGui.doCommand("from freecad_workbench.features.edit_polygon import make_edit_polygon")
-        FreeCADGui.doCommand(f"make_edit_polygon(FreeCAD.getDocument({doc.Name!r}), ({source}, {sub!r}))")
-        created = _new_object(doc, before)
+        FreeCADGui.doCommand(f"make_edit_polygon({doc_code(doc)}, {link_code(obj, sub)})")
+        created = new_object(doc, before)
         if created is not None:
             FreeCADGui.doCommand(f"{source}.ViewObject.Visibility = False")
-            _edit_later(created)
+            edit_later(created)
 
 
 class ProfileTestCommand:
     NAME = "FairSplines_ProfileTest"
 
     def GetResources(self):
-        return {
-            "Pixmap": icon_path(self.NAME),
-            "MenuText": QT_TRANSLATE_NOOP(self.NAME, "Profile test"),
-            "ToolTip": QT_TRANSLATE_NOOP(
-                self.NAME,
+        return resources(
+            self.NAME,
+            QT_TRANSLATE_NOOP("FairSplines_ProfileTest", "Profile test"),
+            QT_TRANSLATE_NOOP(
+                "FairSplines_ProfileTest",
                 "Revolve the selected profile curve into its exact surface of revolution, with zebra shading:\n"
                 "kinks or wobbles of the stripes show curvature flaws of the profile. Axis: the sketch's\n"
                 "vertical axis, or Z (change AxisPoint / AxisDirection).",
             ),
-        }
+            SECTION,
+        )
 
     def IsActive(self):
         return _selected_spline() is not None
@@ -279,9 +252,7 @@ class ProfileTestCommand:
         doc = obj.Document
         FreeCADGui.doCommand("import FreeCAD")
         FreeCADGui.doCommand("from freecad_workbench.features.profile_test import make_profile_test")
-        FreeCADGui.doCommand(
-            f"make_profile_test(FreeCAD.getDocument({doc.Name!r}), "
-            f"(FreeCAD.getDocument({doc.Name!r}).getObject({obj.Name!r}), {sub!r}))")
+        FreeCADGui.doCommand(f"make_profile_test({doc_code(doc)}, {link_code(obj, sub)})")
         FreeCADGui.Selection.clearSelection()
 
 
@@ -295,13 +266,3 @@ def command_objects():
     commands[ProfileTestCommand.NAME] = ProfileTestCommand()
     return commands
 
-
-def register():
-    """Add the commands to FreeCADGui (once)."""
-    existing = FreeCADGui.listCommands()
-    for name, command in command_objects().items():
-        if name not in existing:
-            FreeCADGui.addCommand(name, command)
-
-
-register()

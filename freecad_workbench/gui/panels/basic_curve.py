@@ -4,9 +4,9 @@ recomputes at once; OK keeps the changes as one undo step, Cancel restores the c
 panel opened with."""
 import FreeCAD
 
-from ..features.basic_curve import KIND_DEFAULTS, KIND_PROPERTIES, KINDS
-from . import icon_path
-from .live_edit import LiveEdit, LiveEditPanel
+from ...features.basic_curve import KIND_DEFAULTS, KIND_PROPERTIES, KINDS
+from .. import icon_path
+from .form import LiveEdit, LiveEditPanel, compact, fit_table, form_rows, show_status, vector_rows, wrapped_label
 
 translate = FreeCAD.Qt.translate
 
@@ -51,7 +51,7 @@ class BasicCurvePanel(LiveEditPanel):
     """Task panel editing a BasicCurve object live."""
 
     def __init__(self, obj):
-        from .qt import QtGui, QtWidgets
+        from ..qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -65,28 +65,27 @@ class BasicCurvePanel(LiveEditPanel):
         self.form.setWindowTitle(translate("FairSplines", "Basic curve"))
         self.form.setWindowIcon(QtGui.QIcon(icon_path("FairSplines_BasicCurves")))
         layout = QtWidgets.QVBoxLayout(self.form)
-        top = QtWidgets.QFormLayout()
-        self.kind = QtWidgets.QComboBox()
+        top = form_rows()
+        self.kind = compact(QtWidgets.QComboBox(), 120)
         self.kind.addItems([translate("FairSplines", k) for k in KINDS])
         self.kind.setCurrentIndex(KINDS.index(obj.Kind))
         self.kind.currentIndexChanged.connect(lambda i: self.set_kind(KINDS[i]))
         top.addRow(translate("FairSplines", "Kind"), self.kind)
-        self.plane = QtWidgets.QComboBox()
+        self.plane = compact(QtWidgets.QComboBox(), 120)
         self.plane.addItems(list(PLANES) + [translate("FairSplines", "other")])
         self.plane.currentIndexChanged.connect(self._plane_changed)
         top.addRow(translate("FairSplines", "Plane"), self.plane)
-        self.position = [self._spin(-1e9, 1e9, " mm") for _ in range(3)]
-        row = QtWidgets.QHBoxLayout()
+        layout.addLayout(top)
+        position_box = QtWidgets.QGroupBox(translate("FairSplines", "Position"))
+        position_box.setToolTip(translate("FairSplines", "Where the curve's own origin lies (its Placement)"))
+        self.position = vector_rows(form_rows(box=position_box), [self._spin(-1e9, 1e9, " mm") for _ in range(3)])
         for spin in self.position:
             spin.valueChanged.connect(self._position_changed)
-            row.addWidget(spin)
-        top.addRow(translate("FairSplines", "Position"), row)
-        layout.addLayout(top)
+        layout.addWidget(position_box)
         self.dimensions_box = QtWidgets.QGroupBox(translate("FairSplines", "Dimensions"))
-        self.dimensions = QtWidgets.QFormLayout(self.dimensions_box)
+        self.dimensions = form_rows(box=self.dimensions_box)
         layout.addWidget(self.dimensions_box)
-        self.status_label = QtWidgets.QLabel()
-        self.status_label.setWordWrap(True)
+        self.status_label = wrapped_label()
         layout.addWidget(self.status_label)
         layout.addStretch(1)
         self._build_dimensions()
@@ -97,7 +96,7 @@ class BasicCurvePanel(LiveEditPanel):
 
     def _build_dimensions(self):
         """Rows for the dimensions of the current kind."""
-        from .qt import QtWidgets
+        from ..qt import QtWidgets
 
         while self.dimensions.rowCount():
             self.dimensions.removeRow(0)
@@ -109,13 +108,11 @@ class BasicCurvePanel(LiveEditPanel):
                     continue
                 label = translate("FairSplines", _LABELS.get(name, name))
                 if name in ("Start", "End"):
-                    spins = [self._spin(-1e9, 1e9, " mm") for _ in range(3)]
-                    row = QtWidgets.QHBoxLayout()
+                    self.dimensions.addRow(QtWidgets.QLabel(label))
+                    spins = vector_rows(self.dimensions, (self._spin(-1e9, 1e9, " mm") for _ in range(3)))
                     for spin, value in zip(spins, getattr(self.obj, name)):
                         spin.setValue(value)
                         spin.valueChanged.connect(lambda _v, n=name: self._vector_changed(n))
-                        row.addWidget(spin)
-                    self.dimensions.addRow(label, row)
                     self.widgets[name] = spins
                 elif name == "Poles":
                     table = QtWidgets.QTableWidget(0, 4)
@@ -126,7 +123,9 @@ class BasicCurvePanel(LiveEditPanel):
                         for j, value in enumerate((pole.x, pole.y, pole.z, weights[i])):
                             table.setItem(i, j, QtWidgets.QTableWidgetItem(repr(float(value))))
                     table.itemChanged.connect(lambda _item: self._table_changed())
-                    self.dimensions.addRow(label, table)
+                    fit_table(table)
+                    self.dimensions.addRow(QtWidgets.QLabel(label))
+                    self.dimensions.addRow(table)
                     self.widgets[name] = table
                 else:
                     value = getattr(self.obj, name)
@@ -221,12 +220,7 @@ class BasicCurvePanel(LiveEditPanel):
         self._apply([("Poles", poles), ("Weights", weights)])
 
     def refresh(self):
-        if self.obj.Status == "ok":
-            self.status_label.setText(translate("FairSplines", "Status: ok"))
-            self.status_label.setStyleSheet("")
-        else:
-            self.status_label.setText(translate("FairSplines", "Status: {}").format(self.obj.Status))
-            self.status_label.setStyleSheet("color: #c00000;")
+        show_status(self.status_label, self.obj.Status)
 
     # --- task dialog -----------------------------------------------------------------
 

@@ -1,12 +1,100 @@
-"""Live editing of an object's properties from a task panel: every change is applied and
+"""What the task panels share: a form that fits the side panel, compact spin boxes, a
+status line, and live editing of an object's properties: every change is applied and
 recomputed at once (the preview), inside one undo step; OK keeps it, Cancel restores the
-values the panel opened with. GUI helper, but uses only App calls.
+values the panel opened with.
+
+Fit: FreeCAD's side panel is about 230-300 px wide by default. Every panel here keeps its
+minimum width within PANEL_WIDTH (tests/gui/test_panels.py opens each one and checks):
+one value per row in form layouts, spin boxes that may shrink to SPIN_WIDTH, long texts
+word-wrapped.
 
 FreeCAD closes a transaction a command opened when the command returns, so the step is
 opened lazily, at the first change. If another step was already open the changes join
 it, and Cancel puts the properties back by assignment.
 """
 import FreeCAD
+
+translate = FreeCAD.Qt.translate
+
+PANEL_WIDTH = 220  # px: what a panel's form may need at least: it fits a 260 px side panel with its scroll bar
+SPIN_WIDTH = 72  # px: a spin box may shrink to this
+ERROR_STYLE = "color: #c00000;"
+WARNING_STYLE = "color: #a05a00;"
+
+
+def new_form(title, icon):
+    """(form widget, its vertical layout) of a task panel, with title and icon."""
+    from ..qt import QtGui, QtWidgets
+
+    form = QtWidgets.QWidget()
+    form.setWindowTitle(title)
+    form.setWindowIcon(QtGui.QIcon(icon))
+    return form, QtWidgets.QVBoxLayout(form)
+
+
+def form_rows(parent_layout=None, box=None):
+    """A QFormLayout whose rows wrap (label above field) when the panel is narrow."""
+    from ..qt import QtWidgets
+
+    rows = QtWidgets.QFormLayout(box) if box is not None else QtWidgets.QFormLayout()
+    rows.setRowWrapPolicy(QtWidgets.QFormLayout.WrapLongRows)
+    rows.setFieldGrowthPolicy(QtWidgets.QFormLayout.AllNonFixedFieldsGrow)
+    if parent_layout is not None:
+        parent_layout.addLayout(rows)
+    return rows
+
+
+def compact(widget, width=SPIN_WIDTH):
+    """Let a spin box or combo box shrink to `width` (Qt sizes them for their widest value)."""
+    widget.setMinimumWidth(width)
+    return widget
+
+
+def vector_rows(rows, spins, axes="XYZ"):
+    """One row per coordinate (X, Y, Z) in a form layout: three spin boxes side by side do
+    not fit the side panel. Returns the spin boxes."""
+    spins = list(spins)
+    for axis, spin in zip(axes, spins):
+        rows.addRow(axis, spin)
+    return spins
+
+
+def fit_table(table, width=PANEL_WIDTH - 40):
+    """A table whose columns share the panel's width instead of scrolling sideways."""
+    from ..qt import QtCore, QtWidgets
+
+    header = table.horizontalHeader()
+    header.setSectionResizeMode(QtWidgets.QHeaderView.Stretch)
+    header.setMinimumSectionSize(24)
+    table.setHorizontalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)
+    table.setMinimumWidth(min(width, 160))
+    return table
+
+
+def wrapped_label(text=""):
+    from ..qt import QtWidgets
+
+    label = QtWidgets.QLabel(text)
+    label.setWordWrap(True)
+    return label
+
+
+def show_status(label, status):
+    """A feature's Status in a panel's status line: nothing for ok, amber for a warning,
+    red for an error."""
+    status = status or "ok"
+    if status == "ok":
+        label.setText("")
+        label.setStyleSheet("")
+        label.setVisible(False)
+        return
+    label.setVisible(True)
+    if status.startswith("warning:"):
+        label.setText(translate("FairSplines", "Warning: {}").format(status[len("warning:"):].strip()))
+        label.setStyleSheet(WARNING_STYLE)
+    else:
+        label.setText(translate("FairSplines", "Failed: {}").format(status))
+        label.setStyleSheet(ERROR_STYLE)
 
 
 def _snapshot(value):
@@ -80,17 +168,17 @@ class LiveEditPanel:
     def _spin(self, lower, upper, suffix="", decimals=4):
         """A spin box for a dimension: range, decimals, unit suffix; it reports a value
         only when editing ends (no recompute per keystroke)."""
-        from .qt import QtWidgets
+        from ..qt import QtWidgets
 
         spin = QtWidgets.QDoubleSpinBox()
         spin.setRange(lower, upper)
         spin.setDecimals(decimals)
         spin.setSuffix(suffix)
         spin.setKeyboardTracking(False)
-        return spin
+        return compact(spin)
 
     def getStandardButtons(self):
-        from .qt import QtWidgets
+        from ..qt import QtWidgets
 
         return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
 

@@ -13,10 +13,10 @@ restores the marks the panel opened with.
 """
 import FreeCAD
 
-from ..features.design_spline import get_marks, piece_curves, set_marks
-from . import icon_path
-from .live_edit import LiveEdit, LiveEditPanel
-from .overlay import Overlay, active_view
+from ...features.design_spline import get_marks, piece_curves, set_marks
+from .. import icon_path
+from .form import LiveEdit, LiveEditPanel, show_status, wrapped_label
+from ..overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
 
@@ -36,7 +36,7 @@ class MarkPointsPanel(LiveEditPanel):
     """Task panel: sliders for the marks of a Design spline, with live preview."""
 
     def __init__(self, obj):
-        from .qt import QtCore, QtGui, QtWidgets
+        from ..qt import QtCore, QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -64,14 +64,12 @@ class MarkPointsPanel(LiveEditPanel):
         ))
         hint.setWordWrap(True)
         layout.addWidget(hint)
-        scroll = QtWidgets.QScrollArea()
-        scroll.setWidgetResizable(True)
-        scroll.setHorizontalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)
-        container = QtWidgets.QWidget()
-        self.pieces_layout = QtWidgets.QVBoxLayout(container)
+        # The side panel scrolls by itself: the pieces go straight into the form (no inner scroll area).
+        self.pieces_layout = QtWidgets.QVBoxLayout()
+        self.pieces_layout.setContentsMargins(0, 0, 0, 0)
         self.groups, self.grids, self.reverse_boxes, self.add_buttons, self.info_labels = [], [], [], [], []
         for piece, (label, curve, error) in enumerate(self.curves):
-            group = QtWidgets.QGroupBox(translate("FairSplines", "Piece {}: {}").format(piece, label))
+            group = QtWidgets.QGroupBox(translate("FairSplines", "Piece {}: {}").format(piece + 1, label))
             group_layout = QtWidgets.QVBoxLayout(group)
             grid_widget = QtWidgets.QWidget()
             grid = QtWidgets.QGridLayout(grid_widget)
@@ -100,15 +98,13 @@ class MarkPointsPanel(LiveEditPanel):
             self.add_buttons.append(add)
             self.info_labels.append(info)
             self._build_rows(piece)
-        self.pieces_layout.addStretch(1)
-        scroll.setWidget(container)
-        layout.addWidget(scroll, 1)
+        layout.addLayout(self.pieces_layout)
         self.joins_label = QtWidgets.QLabel()
         self.joins_label.setWordWrap(True)
         layout.addWidget(self.joins_label)
-        self.status_label = QtWidgets.QLabel()
-        self.status_label.setWordWrap(True)
+        self.status_label = wrapped_label()
         layout.addWidget(self.status_label)
+        layout.addStretch(1)
 
         self.overlay = Overlay("FairSplinesMarkPoints")
         self.overlay.attach(active_view(self.doc))
@@ -118,7 +114,7 @@ class MarkPointsPanel(LiveEditPanel):
 
     def _build_rows(self, piece):
         """(Re)create the slider rows of a piece from self.marks."""
-        from .qt import QtCore, QtWidgets
+        from ..qt import QtCore, QtWidgets
 
         grid = self.grids[piece]
         while grid.count():
@@ -136,6 +132,7 @@ class MarkPointsPanel(LiveEditPanel):
             spin.setSingleStep(0.01)
             spin.setKeyboardTracking(False)
             spin.setButtonSymbols(QtWidgets.QAbstractSpinBox.NoButtons)
+            spin.setMinimumWidth(56)
             spin.setMaximumWidth(64)
             remove = QtWidgets.QToolButton()
             remove.setText("\u2212")
@@ -143,7 +140,9 @@ class MarkPointsPanel(LiveEditPanel):
             slider.valueChanged.connect(lambda value, p=piece, i=index: self._slider_moved(p, i, value))
             spin.valueChanged.connect(lambda value, p=piece, i=index: self._spin_changed(p, i, value))
             remove.clicked.connect(lambda checked=False, p=piece, i=index: self.remove_mark(p, i))
-            grid.addWidget(QtWidgets.QLabel(f"u{index + 1}"), index, 0)
+            number = QtWidgets.QLabel(str(index + 1))
+            number.setToolTip(translate("FairSplines", "Mark {} of this piece (its parameter u in 0..1)").format(index + 1))
+            grid.addWidget(number, index, 0)
             grid.addWidget(slider, index, 1)
             grid.addWidget(spin, index, 2)
             grid.addWidget(remove, index, 3)
@@ -222,7 +221,7 @@ class MarkPointsPanel(LiveEditPanel):
         self.marks[piece] = [1.0 - u for u in reversed(self.marks[piece])]
         label, curve, error = self.curves[piece]
         if curve is not None:
-            from ..features.design_spline import reversed_curve
+            from ...features.design_spline import reversed_curve
 
             curve = reversed_curve(curve)
         self.curves[piece] = (label, curve, error)
@@ -254,12 +253,7 @@ class MarkPointsPanel(LiveEditPanel):
     def refresh(self):
         """Status, joins, per-piece notes and the 3D overlay."""
         obj = self.obj
-        if obj.Status == "ok":
-            self.status_label.setText(translate("FairSplines", "Status: ok"))
-            self.status_label.setStyleSheet("")
-        else:
-            self.status_label.setText(translate("FairSplines", "Status: {}").format(obj.Status))
-            self.status_label.setStyleSheet("color: #c00000;")
+        show_status(self.status_label, obj.Status)
         joins = list(obj.Joins)
         self.joins_label.setText(
             translate("FairSplines", "Joins: {}").format(", ".join(joins)) if joins else ""

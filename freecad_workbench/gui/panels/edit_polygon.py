@@ -7,10 +7,10 @@ changes as one undo step, Cancel restores the poles the panel opened with.
 """
 import FreeCAD
 
-from ..features.edit_polygon import reset_pole, set_pole, source_edge
-from . import icon_path
-from .live_edit import LiveEdit, LiveEditPanel
-from .overlay import Overlay, active_view
+from ...features.edit_polygon import reset_pole, set_pole, source_edge
+from .. import icon_path
+from .form import LiveEdit, LiveEditPanel, compact, form_rows, show_status, wrapped_label
+from ..overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
 
@@ -21,7 +21,7 @@ class EditPolygonPanel(LiveEditPanel):
     """Task panel: pick and move the poles of an Edit polygon feature."""
 
     def __init__(self, obj):
-        from .qt import QtGui, QtWidgets
+        from ..qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
@@ -31,25 +31,26 @@ class EditPolygonPanel(LiveEditPanel):
         self._updating = False
 
         self.form = QtWidgets.QWidget()
-        self.form.setWindowTitle(translate("FairSplines", "Edit polygon"))
+        self.form.setWindowTitle(translate("FairSplines", "Edit control points"))
         self.form.setWindowIcon(QtGui.QIcon(icon_path("FairSplines_EditPolygon")))
         layout = QtWidgets.QVBoxLayout(self.form)
         hint = QtWidgets.QLabel(translate(
             "FairSplines",
             "Drag a control point in the 3D view, or pick it in the list and type its position. "
-            "A moved pole changes the curve on the four spans it supports only.",
+            "A moved point changes the curve only near it (on the four spans it supports).",
         ))
         hint.setWordWrap(True)
         layout.addWidget(hint)
         self.list = QtWidgets.QListWidget()
         self.list.currentRowChanged.connect(self._row_changed)
         layout.addWidget(self.list, 1)
-        coords = QtWidgets.QFormLayout()
+        coords = form_rows()
         self.spins = []
         for axis in "XYZ":
-            spin = QtWidgets.QDoubleSpinBox()
+            spin = compact(QtWidgets.QDoubleSpinBox(), 100)
             spin.setDecimals(4)
             spin.setRange(-1e9, 1e9)
+            spin.setSuffix(" mm")
             spin.setKeyboardTracking(False)
             spin.valueChanged.connect(self._spin_changed)
             coords.addRow(axis, spin)
@@ -63,8 +64,9 @@ class EditPolygonPanel(LiveEditPanel):
         buttons.addWidget(self.reset_button)
         buttons.addWidget(self.reset_all_button)
         layout.addLayout(buttons)
-        self.status_label = QtWidgets.QLabel()
-        self.status_label.setWordWrap(True)
+        self.count_label = wrapped_label()
+        layout.addWidget(self.count_label)
+        self.status_label = wrapped_label()
         layout.addWidget(self.status_label)
 
         self.overlay = Overlay("FairSplinesEditPolygon")
@@ -135,17 +137,13 @@ class EditPolygonPanel(LiveEditPanel):
                 for i in range(len(poles)):
                     self.list.addItem("")
             for i, p in enumerate(poles):
-                mark = "  *" if i in moved else ""
-                self.list.item(i).setText(f"{i}:  ({p.x:.4f}, {p.y:.4f}, {p.z:.4f}){mark}")
+                mark = translate("FairSplines", "  (moved)") if i in moved else ""
+                self.list.item(i).setText(f"{i + 1}:  {p.x:.5g}, {p.y:.5g}, {p.z:.5g}{mark}")
         finally:
             self._updating = False
-        if self.obj.Status == "ok":
-            self.status_label.setText(
-                translate("FairSplines", "{} poles, {} moved").format(len(poles), len(moved)))
-            self.status_label.setStyleSheet("")
-        else:
-            self.status_label.setText(translate("FairSplines", "Status: {}").format(self.obj.Status))
-            self.status_label.setStyleSheet("color: #c00000;")
+        self.count_label.setText(
+            translate("FairSplines", "{} control points, {} moved").format(len(poles), len(moved)))
+        show_status(self.status_label, self.obj.Status)
         self.overlay.set_polygon(poles)
         self.overlay.set_moved([poles[i] for i in sorted(moved) if i < len(poles)])
         self._show_selected()

@@ -1,0 +1,43 @@
+"""The csr fit command (GUI only); it records a replayable macro line.
+
+FairSplines_CsrFit   csr fit of the selected vertices, Points, sketch or edges
+"""
+import FreeCADGui
+
+from ...features.csr_fit import usable_source
+from .common import QT_TRANSLATE_NOOP, doc_code, links_code, resources, selected_links
+
+NAME = "FairSplines_CsrFit"
+
+
+class CsrFitCommand:
+    def GetResources(self):
+        return resources(
+            NAME,
+            QT_TRANSLATE_NOOP(NAME, "Spline through points"),
+            QT_TRANSLATE_NOOP(
+                NAME,
+                "A smooth C2 spline through the selected vertices, Points object, sketch points or edges\n"
+                "(the csr-spline: conics stay exact, no curvature wiggles). Select points in order;\n"
+                "edges are sampled.",
+            ),
+            "Using it in the FreeCAD GUI",
+            accel="F, F",
+        )
+
+    def IsActive(self):
+        links = selected_links()
+        return bool(links) and all(usable_source(obj, sub) for obj, sub in links)
+
+    def Activated(self):
+        links = selected_links()
+        if not links:
+            return
+        FreeCADGui.doCommand("import FreeCAD")
+        FreeCADGui.doCommand("from freecad_workbench.features.csr_fit import make_csr_fit")
+        FreeCADGui.doCommand(f"make_csr_fit({doc_code(links[0][0].Document)}, {links_code(links)})")
+        FreeCADGui.Selection.clearSelection()
+
+
+def command_objects():
+    return {NAME: CsrFitCommand()}

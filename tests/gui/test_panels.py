@@ -1,0 +1,167 @@
+"""Every task panel fits FreeCAD's side panel (about 300 px wide by default): its minimum
+width, for every kind and mode it can show, stays within PANEL_WIDTH, so nothing is
+clipped and OK/Cancel stay visible. Each panel is also pictured at the side panel's width
+(out/test-artifacts/panel_*.png) for people to look at."""
+import math
+import os
+
+import pytest
+
+import FreeCAD
+import Part
+import Sketcher  # noqa: F401
+
+from freecad_workbench.features.basic_curve import KINDS as CURVE_KINDS
+from freecad_workbench.features.blend_shape import KINDS as SHAPE_KINDS
+
+V = FreeCAD.Vector
+SIDE_PANEL = 260  # px: the narrow end of FreeCAD's default combo view width
+
+
+def gui():
+    import FreeCADGui
+
+    return FreeCADGui
+
+
+@pytest.fixture
+def active(doc):
+    g = gui()
+    FreeCAD.setActiveDocument(doc.Name)
+    g.ActiveDocument = g.getDocument(doc.Name)
+    yield doc
+    if g.Control.activeDialog():
+        g.Control.closeDialog()
+    gui_doc = g.getDocument(doc.Name)
+    if gui_doc is not None and gui_doc.getInEdit() is not None:
+        gui_doc.resetEdit()
+    g.updateGui()
+
+
+def open_panel(obj):
+    g = gui()
+    g.getDocument(obj.Document.Name).setEdit(obj.Name, 0)
+    g.updateGui()
+    panel = obj.ViewObject.Proxy.panel
+    assert panel is not None and g.Control.activeDialog()
+    return panel
+
+
+def close(panel):
+    panel.reject()
+    gui().updateGui()
+
+
+def needed_width(panel):
+    """What the panel's form needs at least: its layout's minimum (what Qt would clip below)."""
+    panel.form.adjustSize()
+    return panel.form.minimumSizeHint().width()
+
+
+def picture(panel, name, artifacts):
+    """The form at the side panel's width and its own height, saved for people to look at."""
+    form = panel.form
+    gui().updateGui()
+    form.layout().activate()
+    height = max(form.minimumSizeHint().height(), form.heightForWidth(SIDE_PANEL - 20), form.sizeHint().height())
+    form.resize(SIDE_PANEL - 20, height)
+    gui().updateGui()
+    form.grab().save(os.path.join(artifacts, f"panel_{name}.png"))
+
+
+def _scroll_area_of(widget):
+    from freecad_workbench.gui.qt import QtWidgets
+
+    while widget is not None and not isinstance(widget, QtWidgets.QScrollArea):
+        widget = widget.parentWidget()
+    return widget
+
+
+def assert_fits(panel, what):
+    """Within the budget, and nothing hidden sideways in the session's own side panel (the
+    task view scrolls sideways when a form is wider than it)."""
+    from freecad_workbench.gui.panels.form import PANEL_WIDTH
+
+    width = needed_width(panel)
+    assert width <= PANEL_WIDTH, f"{what} needs {width} px, more than {PANEL_WIDTH} px"
+    scroll = _scroll_area_of(panel.form)
+    if scroll is not None:  # shown in the task view (the comb panel test makes one unshown)
+        gui().updateGui()
+        assert scroll.horizontalScrollBar().maximum() == 0, (
+            f"{what} is wider than the side panel's {scroll.viewport().width()} px")
+
+
+@pytest.mark.parametrize("kind", CURVE_KINDS)
+def test_basic_curve_panel_fits_for_every_kind(active, kind, artifacts):
+    from freecad_workbench.features.basic_curve import make_basic_curve
+
+    obj = make_basic_curve(active, kind)
+    panel = open_panel(obj)
+    assert_fits(panel, f"Basic curve panel ({kind})")
+    if kind in ("Circle arc", "Rational cubic"):
+        picture(panel, "basic_curve_" + kind.replace(" ", "_").lower(), artifacts)
+    close(panel)
+
+
+@pytest.mark.parametrize("uniform", [True, False], ids=["uniform", "lists"])
+@pytest.mark.parametrize("kind", SHAPE_KINDS)
+def test_blend_shape_panel_fits_for_every_kind_and_partition(active, kind, uniform, artifacts):
+    from freecad_workbench.features.blend_shape import make_blend_shape
+
+    obj = make_blend_shape(active, kind)
+    panel = open_panel(obj)
+    panel.set_uniform(uniform)
+    assert_fits(panel, f"Blend basic shape panel ({kind}, {'uniform' if uniform else 'lists'})")
+    if kind == SHAPE_KINDS[0]:
+        picture(panel, "blend_shape_" + ("uniform" if uniform else "lists"), artifacts)
+    close(panel)
+
+
+def _design(doc):
+    from freecad_workbench.features.design_spline import make_design_spline
+
+    sketch = doc.addObject("Sketcher::SketchObject", "Profile")
+    sketch.addGeometry(Part.LineSegment(V(20, 0, 0), V(20, 10, 0)))
+    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(15, 10, 0), V(0, 0, 1), 5), 0, math.pi / 2))
+    sketch.addGeometry(Part.LineSegment(V(15, 15, 0), V(0, 15, 0)))
+    doc.recompute()
+    return make_design_spline(doc, [((sketch, "Edge1"), None), ((sketch, "Edge2"), None), ((sketch, "Edge3"), None)])
+
+
+def test_mark_points_panel_fits_with_several_pieces_and_marks(active, artifacts):
+    design = _design(active)
+    panel = open_panel(design)
+    for _ in range(3):
+        panel.add_mark(1)
+    assert_fits(panel, "Mark points panel")
+    picture(panel, "mark_points", artifacts)
+    close(panel)
+
+
+def test_edit_polygon_panel_fits(active, artifacts):
+    from freecad_workbench.features.edit_polygon import make_edit_polygon
+
+    edited = make_edit_polygon(active, _design(active))
+    panel = open_panel(edited)
+    assert_fits(panel, "Edit polygon panel")
+    picture(panel, "edit_polygon", artifacts)
+    close(panel)
+
+
+def test_monotone_design_panel_fits(active, artifacts):
+    from freecad_workbench.features.monotone_design import make_monotone_design
+
+    design = make_monotone_design(active, (10.0, 0.0), [(10.0, 5.0), (3.0, 4.5), (-133.0 / 12, -13.0 / 3)])
+    panel = open_panel(design)
+    assert_fits(panel, "Monotone design panel")
+    picture(panel, "monotone_design", artifacts)
+    close(panel)
+
+
+def test_comb_panel_fits(active, artifacts):
+    from freecad_workbench.gui.panels.comb import CombTaskPanel
+
+    panel = CombTaskPanel()
+    assert_fits(panel, "Curvature comb panel")
+    picture(panel, "comb", artifacts)
+    panel.form.deleteLater()

@@ -1,0 +1,173 @@
+"""Pictures of the whole FreeCAD main window, at its default layout, with each FairSplines
+task panel open in the side panel (and a fair blend with its comb): the README's GUI
+section shows them. Run under a virtual display:
+
+    xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR]
+
+OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
+import math
+import os
+import sys
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FREECAD_LIB = os.environ.get("FAIRSPLINES_FREECAD_LIB", "/usr/lib/freecad-python3/lib")
+os.environ.setdefault("QTWEBENGINE_DISABLE_SANDBOX", "1")
+sys.path.append(FREECAD_LIB)
+
+import FreeCAD  # noqa: E402
+
+sys.path.insert(0, REPO)
+
+
+def start_gui():
+    for folder in ("/usr/share/freecad/Mod", os.path.join(FreeCAD.getHomePath(), "Mod")):
+        for module in ("Part", "Sketcher"):  # Python parts of PartGui and SketcherGui
+            path = os.path.join(folder, module)
+            if os.path.isdir(path) and path not in sys.path:
+                sys.path.append(path)
+    import FreeCADGui
+
+    FreeCAD.ParamGet("User parameter:BaseApp/Preferences/View").SetBool("UseNavigationAnimations", False)
+    FreeCADGui.showMainWindow()
+    if "FairSplinesWorkbench" in FreeCADGui.listWorkbenches():
+        FreeCADGui.removeWorkbench("FairSplinesWorkbench")
+    with open(os.path.join(REPO, "InitGui.py"), encoding="utf-8") as f:
+        exec(compile(f.read(), "InitGui.py", "exec"), {"__name__": "InitGui"})
+    FreeCADGui.activateWorkbench("FairSplinesWorkbench")
+    FreeCADGui.getMainWindow().showMaximized()
+    settle()
+    return FreeCADGui
+
+
+def settle(times=5):
+    import FreeCADGui
+
+    from freecad_workbench.gui.qt import QtWidgets
+
+    for _ in range(times):
+        FreeCADGui.updateGui()
+        QtWidgets.QApplication.processEvents()
+
+
+def new_doc(name):
+    import FreeCADGui
+
+    doc = FreeCAD.newDocument(name)
+    FreeCAD.setActiveDocument(doc.Name)
+    FreeCADGui.ActiveDocument = FreeCADGui.getDocument(doc.Name)
+    return doc
+
+
+def grab(out, name, direction="viewTop"):
+    """The main window, with the 3D view's own rendering put where the view is (a widget
+    grab leaves an OpenGL view blank)."""
+    import FreeCADGui
+    from PIL import Image
+
+    from freecad_workbench.gui.qt import QtCore, QtWidgets
+
+    main = FreeCADGui.getMainWindow()
+    for report in main.findChildren(QtWidgets.QTextEdit):
+        if report.objectName() == "Report view":
+            report.clear()  # start-up chatter of a python-hosted FreeCAD, not ours
+    view = FreeCADGui.ActiveDocument.ActiveView if FreeCADGui.ActiveDocument else None
+    if view is not None and hasattr(view, "fitAll"):
+        getattr(view, direction)()
+        view.fitAll()
+    settle()
+    path = os.path.join(out, name + ".png")
+    main.grab().save(path)
+    area = main.findChild(QtWidgets.QMdiArea)
+    sub = area.activeSubWindow() if area is not None else None
+    if view is not None and sub is not None and sub.widget() is not None:
+        widget = sub.widget()
+        corner = widget.mapTo(main, QtCore.QPoint(0, 0))
+        rendered = path + ".view.png"
+        view.saveImage(rendered, widget.width(), widget.height(), "Current")
+        picture = Image.open(path).convert("RGB")
+        picture.paste(Image.open(rendered).convert("RGB"), (corner.x(), corner.y()))
+        picture.save(path)
+        os.remove(rendered)
+    print("wrote", path)
+
+
+def edit(obj):
+    import FreeCADGui
+
+    FreeCADGui.getDocument(obj.Document.Name).setEdit(obj.Name, 0)
+    settle()
+    return obj.ViewObject.Proxy.panel
+
+
+def close_panel(panel):
+    panel.reject()
+    settle()
+
+
+def main(out):
+    import Part
+    import Sketcher  # noqa: F401
+
+    from freecad_workbench.features.basic_curve import make_basic_curve
+    from freecad_workbench.features.blend_shape import make_blend_shape
+    from freecad_workbench.features.design_spline import make_design_spline
+    from freecad_workbench.features.edit_polygon import make_edit_polygon
+    from freecad_workbench.features.fair_blend import make_fair_blend
+    from freecad_workbench.gui import comb
+
+    V = FreeCAD.Vector
+    os.makedirs(out, exist_ok=True)
+    start_gui()
+
+    doc = new_doc("BasicCurve")
+    arc = make_basic_curve(doc, "Ellipse arc")
+    panel = edit(arc)
+    grab(out, "basic_curve_panel")
+    close_panel(panel)
+
+    doc = new_doc("Design")
+    sketch = doc.addObject("Sketcher::SketchObject", "Profile")
+    sketch.addGeometry(Part.LineSegment(V(20, 0, 0), V(20, 10, 0)))
+    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(15, 10, 0), V(0, 0, 1), 5), 0, math.pi / 2))
+    sketch.addGeometry(Part.LineSegment(V(15, 15, 0), V(0, 15, 0)))
+    doc.recompute()
+    design = make_design_spline(doc, [((sketch, f"Edge{i}"), None) for i in (1, 2, 3)])
+    panel = edit(design)
+    grab(out, "mark_points_panel")
+    close_panel(panel)
+    edited = make_edit_polygon(doc, design)
+    design.ViewObject.Visibility = False
+    panel = edit(edited)
+    panel.move_pole(5, edited.Poles[5] + V(2, -1, 0))
+    panel.select(5)
+    grab(out, "edit_polygon_panel")
+    close_panel(panel)
+
+    doc = new_doc("Blend")
+    shape = make_blend_shape(doc, "Cylinder")
+    panel = edit(shape)
+    grab(out, "blend_shape_panel", "viewIsometric")
+    close_panel(panel)
+
+    doc = new_doc("FairBlend")
+    sys.path.insert(0, REPO)
+    from tests.scenes import line_into_arc
+
+    lead, out_arc = line_into_arc(doc)  # a line, then an arc a clothoid reaches: a monotone G2 blend exists
+    blend = make_fair_blend(doc, (lead, "Edge1"), (out_arc, "Edge1"), start_end="last", end_end="first")
+    import FreeCADGui
+
+    comb.show(blend)
+    FreeCADGui.Selection.clearSelection()
+    FreeCADGui.Selection.addSelection(blend)
+    grab(out, "fair_blend_comb")
+    comb.hide()
+    for name in list(FreeCAD.listDocuments()):
+        FreeCAD.closeDocument(name)
+    settle()
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(REPO, "docs", "gui"))
+    sys.stdout.flush()
+    os._exit(0)  # leave without tearing down Qt from Python (Shiboken crashes at exit otherwise)
