@@ -25,9 +25,11 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import FreeCADGui as Gui
-        from freecad_workbench.gui import ICON_DIR, commands
+        from freecad_workbench.gui import ICON_DIR, commands, preferences, translations
 
         Gui.addIconPath(ICON_DIR)
+        translations.install()
+        preferences.register_preferences()
         commands.register()
         self.appendToolbar("FairSplines", list(commands.TOOLBAR))
         for submenu, names in commands.MENU:

@@ -9,7 +9,7 @@ XVFB     := xvfb-run -a -s "-screen 0 1280x1024x24"
 export QTWEBENGINE_DISABLE_SANDBOX=1
 
 .PHONY: deps build install demo test test-cpp test-python run bench clean \
-        test-freecad-1.0 test-freecad-1.1 test-matrix
+        test-freecad-1.0 test-freecad-1.1 test-matrix translations
 
 deps:
 	@bash tools/install-deps.sh
@@ -63,3 +63,8 @@ bench: build
 
 clean:
 	rm -rf $(BUILD) $(OUT) freecad_workbench/_kernel*.so
+
+# The translation template translations/FairSplines.ts, from every translate() and
+# QT_TRANSLATE_NOOP() in the sources (tests/toolchain/test_translations.py checks it is current).
+translations:
+	$(PYTHON) tools/update_translations.py

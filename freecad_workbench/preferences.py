@@ -30,8 +30,8 @@ PREFERENCES = {
     p.key: p
     for p in (
         Preference("CombScale", float, 1.0, -1000.0, 1000.0, "", "Float",
-                   "Curvature comb scale factor: at 1 the longest tooth is a quarter of the curve's size; "
-                   "negative draws the comb on the other side"),
+                   "Curvature comb scale factor: at 1 the longest tooth is at most a quarter of the curve's "
+                   "size and no tooth reaches its centre of curvature; negative draws the comb on the other side"),
         Preference("CombSamples", int, 256, 8, 100000, "", "Int", "Curvature comb teeth per edge (at least)"),
         Preference("CombCommonScale", bool, False, None, None, "", "Bool",
                    "One scale for all combs shown, so tooth lengths compare between curves"),

@@ -20,6 +20,9 @@ sys.path.insert(0, REPO)
 
 
 def start_gui():
+    ext = "/usr/share/freecad/Ext"  # FreeCAD's own 'freecad' package: FreeCAD run as itself has it on the path
+    if os.path.isdir(ext) and ext not in sys.path:
+        sys.path.append(ext)
     for folder in ("/usr/share/freecad/Mod", os.path.join(FreeCAD.getHomePath(), "Mod")):
         for module in ("Part", "Sketcher"):  # Python parts of PartGui and SketcherGui
             path = os.path.join(folder, module)
@@ -79,7 +82,8 @@ def grab(out, name, direction="viewTop"):
     main.grab().save(path)
     area = main.findChild(QtWidgets.QMdiArea)
     sub = area.activeSubWindow() if area is not None else None
-    if view is not None and sub is not None and sub.widget() is not None:
+    is_3d = sub is not None and sub.widget() is not None and sub.widget().metaObject().className() == "Gui::View3DInventor"
+    if view is not None and is_3d:
         widget = sub.widget()
         corner = widget.mapTo(main, QtCore.QPoint(0, 0))
         rendered = path + ".view.png"
@@ -161,6 +165,12 @@ def main(out):
     FreeCADGui.Selection.clearSelection()
     FreeCADGui.Selection.addSelection(blend)
     grab(out, "fair_blend_comb")
+    from freecad_workbench.gui import plot
+
+    plot.plot_links([(blend, "Edge1"), (out_arc, "Edge1")])
+    settle()
+    grab(out, "curvature_plot_tab")
+    plot.close_plot_tabs()
     comb.hide()
     for name in list(FreeCAD.listDocuments()):
         FreeCAD.closeDocument(name)

@@ -40,15 +40,16 @@ from ..errors import InputError
 from .base import FeatureProxy, attach_view_provider
 from .undo import undo_step
 
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP  # marks a name for translation, returns it unchanged
 KINDS = (
-    "Line segment",
-    "Circle arc",
-    "Ellipse arc",
-    "Parabola arc",
-    "Hyperbola arc",
-    "Archimedean spiral",
-    "Circle involute",
-    "Rational cubic",
+    QT_TRANSLATE_NOOP("FairSplines", "Line segment"),
+    QT_TRANSLATE_NOOP("FairSplines", "Circle arc"),
+    QT_TRANSLATE_NOOP("FairSplines", "Ellipse arc"),
+    QT_TRANSLATE_NOOP("FairSplines", "Parabola arc"),
+    QT_TRANSLATE_NOOP("FairSplines", "Hyperbola arc"),
+    QT_TRANSLATE_NOOP("FairSplines", "Archimedean spiral"),
+    QT_TRANSLATE_NOOP("FairSplines", "Circle involute"),
+    QT_TRANSLATE_NOOP("FairSplines", "Rational cubic"),
 )
 
 # The dimensions each kind uses, in the order the task panel shows them.

@@ -32,7 +32,7 @@ MAXIMUM_MARKER, MINIMUM_MARKER = "v", "^"  # drawn just above a maximum, just be
 EXTREMUM_MARKER_SIZE = 7
 
 
-def curvature_plot(edges_with_labels, path=None, n=DEFAULT_SAMPLES, title="Curvature", marks=()):
+def curvature_plot(edges_with_labels, path=None, n=None, title="Curvature", marks=()):
     """Plot curvature against arc length.
 
     edges_with_labels: items (edge or curve, label), or bare edges/curves (labelled
@@ -44,8 +44,12 @@ def curvature_plot(edges_with_labels, path=None, n=DEFAULT_SAMPLES, title="Curva
     where an explicit mark already is.
     Returns the matplotlib Figure. Shown in a tab of the FreeCAD main window, the figure's
     `fairsplines_subwindow` is that tab (a QMdiSubWindow; close() closes it).
+    n: samples per curve; None takes the PlotSamples preference (DEFAULT_SAMPLES unless set).
     Raises ValueError when there is nothing to plot.
     """
+    from .. import preferences
+
+    n = int(preferences.get("PlotSamples")) if n is None else int(n)
     items = []
     for index, item in enumerate(edges_with_labels, start=1):
         curve, label = item if isinstance(item, tuple) else (item, f"curve {index}")
@@ -302,6 +306,6 @@ def link_edges(links):
     return result
 
 
-def plot_links(links, path=None, n=DEFAULT_SAMPLES):
+def plot_links(links, path=None, n=None):
     """curvature_plot of the edges of selection-style links [(obj, sub)]."""
     return curvature_plot(link_edges(links), path=path, n=n)

@@ -9,6 +9,7 @@ from .. import icon_path
 from .form import LiveEdit, LiveEditPanel, compact, fit_table, form_rows, show_status, vector_rows, wrapped_label
 
 translate = FreeCAD.Qt.translate
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
 # Rotations that put the curve's XY plane onto a global plane (X and Y of the curve to
 # the first and second axis named).
@@ -19,21 +20,21 @@ PLANES = {
 }
 
 _LABELS = {
-    "Start": "Start point",
-    "End": "End point",
-    "Radius": "Radius",
-    "MajorRadius": "Major radius",
-    "MinorRadius": "Minor radius",
-    "StartAngle": "Start angle",
-    "EndAngle": "End angle",
-    "Focal": "Focal distance",
-    "StartY": "Start y",
-    "EndY": "End y",
-    "StartParameter": "Start parameter t",
-    "EndParameter": "End parameter t",
-    "Pitch": "Pitch (per turn)",
-    "Turns": "Turns",
-    "Poles": "Poles and weights",
+    "Start": QT_TRANSLATE_NOOP("FairSplines", "Start point"),
+    "End": QT_TRANSLATE_NOOP("FairSplines", "End point"),
+    "Radius": QT_TRANSLATE_NOOP("FairSplines", "Radius"),
+    "MajorRadius": QT_TRANSLATE_NOOP("FairSplines", "Major radius"),
+    "MinorRadius": QT_TRANSLATE_NOOP("FairSplines", "Minor radius"),
+    "StartAngle": QT_TRANSLATE_NOOP("FairSplines", "Start angle"),
+    "EndAngle": QT_TRANSLATE_NOOP("FairSplines", "End angle"),
+    "Focal": QT_TRANSLATE_NOOP("FairSplines", "Focal distance"),
+    "StartY": QT_TRANSLATE_NOOP("FairSplines", "Start y"),
+    "EndY": QT_TRANSLATE_NOOP("FairSplines", "End y"),
+    "StartParameter": QT_TRANSLATE_NOOP("FairSplines", "Start parameter t"),
+    "EndParameter": QT_TRANSLATE_NOOP("FairSplines", "End parameter t"),
+    "Pitch": QT_TRANSLATE_NOOP("FairSplines", "Pitch (per turn)"),
+    "Turns": QT_TRANSLATE_NOOP("FairSplines", "Turns"),
+    "Poles": QT_TRANSLATE_NOOP("FairSplines", "Poles and weights"),
 }
 
 

@@ -1,0 +1,958 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1">
+<context>
+    <name>FairSplines</name>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>  (moved)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>(a ring)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>1 piece per arc (σ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <source>1: the longest tooth is at most a quarter of the curve&apos;s size, and every tooth ends short of its centre of curvature (at most 90% of the way), so the teeth of an arc do not cross. Above 1 teeth may reach past their centres. Negative: the comb on the other side.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>3 pieces per arc (ρ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>A B-spline face, bicubic and periodic around the axis (any knots), its first row near the interface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Add a mark in the middle of the widest gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Add mark</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Add vector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Algorithm 1 of the monotone-curvature paper: V0 is the first control vector, dV_i = V_(i+1) - V_i; each dV_i is kept where the second-derivative control point C2_i lies in its fair location (Theorem 2), so the curvature is monotone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Archimedean spiral</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Auto</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Basic curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Black and white stripe pairs the zebra shading of blends and of new profile tests reflects. An existing profile test keeps its own: its Stripes view property.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>C2: (6,5) strip to bicubic NURBS (Section 4.2); C1: (4,2) double strip to biquadratic NURBS (Section 5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Circle arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Circle involute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Circles as</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Cone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Continuous in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Curvature (C2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Curvature below this, relative to one over the size of the data, counts as straight (eq. (6) of the csr paper). Used by new splines through points (csr fits); an existing one keeps its CurvatureTolerance.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Curvature comb</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Curvature plot samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Cylinder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Default ring</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Default ring (continues the shape)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Design spline join tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Dimensions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>Drag a control point in the 3D view, or pick it in the list and type its position. A moved point changes the curve only near it (on the four spans it supports).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Edit basic curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Edit blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>Edit control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>Edit polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/view_providers.py"/>
+        <source>Edit {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Ellipse arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>End</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>End angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>End parameter t</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>End point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>End points of consecutive pieces closer than this are averaged into one point; farther apart they are joined by a line. Used by new design splines.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>End y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/form.py"/>
+        <source>Failed: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Fitting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Focal distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Free-form side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>General</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>How many teeth a comb has on each edge, at least. More show finer detail, fewer redraw faster.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>How the circles of the shape are reparametrised so that they join C2 (Section 3): ρ, three rational pieces per arc (Appendix 7.1); σ, one sextic per arc (eqs. (7)-(8)); mixed, ρ only where neighbouring arcs differ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Hyperbola arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Join</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Join another Blend basic shape instead of a ring (Figs. 9-12): this profile&apos;s end to the start of its profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Join at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Joined to {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Joins: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Length of the teeth. At 1 the longest tooth is at most a quarter of the curve&apos;s size and no tooth reaches its centre of curvature; 2 doubles them. Negative: the comb on the other side of the curve.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Line segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Major radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Mark points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Mark {} of this piece (its parameter u in 0..1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Minor radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Mixed (ρ where arcs differ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Monotone design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/common.py"/>
+        <source>More in the FairSplines README, section “{}”:
+{}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Moved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>No step needed moving: the curvature is monotone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/view_providers.py"/>
+        <source>Number of black and white stripe pairs reflected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>On: every comb shown is drawn to one scale, the smallest any of them would get on its own, so tooth lengths compare between curves. Off: each comb is sized to its own curve.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Or join to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Parabola arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Patches: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Piece {}: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Pitch (per turn)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Plain join (to compare)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Plots</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Points at which a curvature plot evaluates each curve.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Poles and weights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/basic_curve.py"/>
+        <source>Rational cubic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Remove last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Remove this mark</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>Reset all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>Reset pole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Run this piece from its end to its start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Same scale for all combs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <source>Scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Scale factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/view_providers.py"/>
+        <source>Show the control polygon of the curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/comb.py"/>
+        <source>Show the curvature comb of this object&apos;s edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Slide the marks along each basic curve. A conic stays exact from its second to its second-last mark; the joins are rounded off in between.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Sphere zone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Spline through points: tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Start angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Start parameter t</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Start point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Start y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Step {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Steps moved to keep the curvature monotone: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Stripe pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Tangent (C1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <source>Teeth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Teeth per edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <source>Teeth per edge (at least)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>The curve&apos;s control points, as where it starts and the step to each next one. A step that would make the curvature change direction is moved at once to the nearest one that keeps it rising (or falling); the last column says how far.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>The paper&apos;s naive blend (Fig. 2a): the shape and the ring joined without the transition strip; its seams show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Torus</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Turns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Uniform partitions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Use selected face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/form.py"/>
+        <source>Warning: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>Where the curve&apos;s own origin lies (its Placement)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Which end of the profile joins the free-form side; Auto: the end, or the start where the end is a pole</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
+        <source>Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Zebra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <source>other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>select a B-spline face of another object first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
+        <source>{} control points, {} moved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>{} mark(s) added to keep the weights positive</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_AnalysisGroup</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature analysis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature comb, curvature plot, monotonicity check, zebra profile test</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_ArchimedeanSpiral</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>An Archimedean spiral (followed to about 1e-8 of its size in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Archimedean spiral</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_BasicCurves</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Basic curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Create a basic curve: line, conic arc, spiral, involute, rational cubic</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_BlendBasicShape</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/blend.py"/>
+        <source>A sphere zone, cylinder, cone or torus kept exact and joined smoothly (C2, or C1) to a
+free-form ring, a selected B-spline face or another basic shape.
+Set it up in the panel; zebra stripes show the seams.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/blend.py"/>
+        <source>Blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_BlendGroup</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/__init__.py"/>
+        <source>Blends</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/__init__.py"/>
+        <source>Fair blend between two curves, monotone design, blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CheckMonotone</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Check curvature monotonicity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Prove whether the curvature of the selected planar edges only rises or only falls
+(an exact check, span by span): a report in the report view and a curvature plot
+with any extremum marked.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CircleArc</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>A circle arc (kept exact in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Circle arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CircleInvolute</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>An involute of a circle (followed closely in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Circle involute</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CsrFit</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/csr.py"/>
+        <source>A smooth C2 spline through the selected vertices, Points object, sketch points or edges
+(the csr-spline: conics stay exact, no curvature wiggles). Select points in order;
+edges are sampled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/csr.py"/>
+        <source>Spline through points</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CurvatureComb</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature comb</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Show or hide the curvature comb of the selected edges.
+With nothing selected, hide all combs.
+A whole object&apos;s comb is its view property Curvature Comb, saved with the document.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CurvaturePlot</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Plot curvature against arc length of the selected edges, one line each,
+in a tab of the main window, with the curvature extrema marked.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_DesignSpline</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Design spline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>One smooth (C2) spline through the selected basic curves, in pick order: edges of
+sketches or Part objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_EditPolygon</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Edit control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Move control points of the selected spline (a Design spline, a spline through points or any
+B-spline edge). The edited curve follows the design; a moved point changes the curve only
+near it (the four spans it supports).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_EllipseArc</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>An ellipse arc (kept exact in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Ellipse arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_HyperbolaArc</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>A hyperbola arc (kept exact in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Hyperbola arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_LineSegment</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>A line segment, to join to curved pieces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Line segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_MarkPoints</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Mark points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Move, add and remove the points marked on the pieces of the selected Design spline,
+with sliders (live preview)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_MonotoneBlend</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/fair_blend.py"/>
+        <source>Bridge two selected edges, at the ends you clicked near, with a curve whose curvature
+only rises or only falls, proved exactly. Matches the edges&apos; tangents and curvatures
+(G2); set Continuity to G1 for tangents only. Or select two vertices and set the
+directions in the blend&apos;s properties.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/fair_blend.py"/>
+        <source>Fair blend</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_MonotoneDesign</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/fair_blend.py"/>
+        <source>Design a cubic spline whose curvature only rises or only falls, from the steps between
+its control points. Edits the selected Monotone design, or creates one. A step that
+would break the monotone curvature is moved back to the nearest one that keeps it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/fair_blend.py"/>
+        <source>Monotone design</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_ParabolaArc</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>A parabola arc (kept exact in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Parabola arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_ProfileTest</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Profile test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Revolve the selected profile curve into its exact surface of revolution, with zebra shading:
+kinks or wobbles of the stripes show curvature flaws of the profile. Axis: the sketch&apos;s
+vertical axis, or Z (change AxisPoint / AxisDirection).</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_RationalCubic</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>A rational Bezier curve of degree at most 3 (kept exact in a design)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/design.py"/>
+        <source>Rational cubic</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Workbench</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/__init__.py"/>
+        <source>Basic curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+</TS>
