@@ -281,11 +281,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
-        <source>Joins: {}</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Kind</source>
@@ -376,6 +371,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Piece {}: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>Pieces {} and {}: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -618,6 +618,21 @@
     <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Zebra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>ends a little apart, averaged into one point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>ends apart, joined by a straight edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>meet end to start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

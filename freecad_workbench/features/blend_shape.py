@@ -35,10 +35,18 @@ from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP  # marks a name for translation, returns it unchanged
-KINDS = (QT_TRANSLATE_NOOP("FairSplines", "Sphere zone"), QT_TRANSLATE_NOOP("FairSplines", "Cylinder"), QT_TRANSLATE_NOOP("FairSplines", "Cone"),
-         QT_TRANSLATE_NOOP("FairSplines", "Torus"))
+KINDS = (
+    QT_TRANSLATE_NOOP("FairSplines", "Sphere zone"),
+    QT_TRANSLATE_NOOP("FairSplines", "Cylinder"),
+    QT_TRANSLATE_NOOP("FairSplines", "Cone"),
+    QT_TRANSLATE_NOOP("FairSplines", "Torus"),
+)
 METHODS = ("rho", "sigma", "mixed")
-INTERFACES = (QT_TRANSLATE_NOOP("FairSplines", "Auto"), QT_TRANSLATE_NOOP("FairSplines", "End"), QT_TRANSLATE_NOOP("FairSplines", "Start"))
+INTERFACES = (
+    QT_TRANSLATE_NOOP("FairSplines", "Auto"),
+    QT_TRANSLATE_NOOP("FairSplines", "End"),
+    QT_TRANSLATE_NOOP("FairSplines", "Start"),
+)
 CONTINUITIES = ("C2", "C1")
 
 # The dimensions of each kind: the lengths, then (around list, profile list).

@@ -20,6 +20,14 @@ from ..overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
 
+QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+# How consecutive pieces were joined (the design's Joins), in words.
+JOIN_WORDS = {
+    "agree": QT_TRANSLATE_NOOP("FairSplines", "meet end to start"),
+    "averaged": QT_TRANSLATE_NOOP("FairSplines", "ends a little apart, averaged into one point"),
+    "edge": QT_TRANSLATE_NOOP("FairSplines", "ends apart, joined by a straight edge"),
+}
+
 SCALE = 10000  # slider steps over [0, 1]
 GAP = 1.0 / SCALE  # marks stay at least this far apart, and from 0 and 1
 DECIMALS = 4
@@ -255,9 +263,9 @@ class MarkPointsPanel(LiveEditPanel):
         obj = self.obj
         show_status(self.status_label, obj.Status)
         joins = list(obj.Joins)
-        self.joins_label.setText(
-            translate("FairSplines", "Joins: {}").format(", ".join(joins)) if joins else ""
-        )
+        pair = translate("FairSplines", "Pieces {} and {}: {}")
+        self.joins_label.setText("\n".join(
+            pair.format(k + 1, k + 2, translate("FairSplines", JOIN_WORDS.get(j, j))) for k, j in enumerate(joins)))
         added = list(obj.MarksAdded)
         for piece, info in enumerate(self.info_labels):
             label, curve, error = self.curves[piece]
