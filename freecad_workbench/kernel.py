@@ -152,10 +152,12 @@ def from_part(curve):
         edges = curve.Edges
         if len(edges) != 1:
             raise InputError(f"expected one edge, got a shape with {len(edges)} edges")
+        _require_bounded(edges[0].FirstParameter, edges[0].LastParameter, type(edges[0].Curve).__name__)
         curve = _edge_bspline(edges[0])
     elif not isinstance(curve, Part.BSplineCurve):
         if not hasattr(curve, "toShape"):
             raise InputError(f"not a curve or edge: {type(curve).__name__}")
+        _require_bounded(curve.FirstParameter, curve.LastParameter, type(curve).__name__)
         curve = _edge_bspline(curve.toShape())
     poles = np.array([(p.x, p.y, p.z) for p in curve.getPoles()], dtype=float)
     weights = np.array(curve.getWeights(), dtype=float) if curve.isRational() else np.zeros(0)
@@ -167,6 +169,15 @@ def from_part(curve):
         curve.isPeriodic(),
         weights,
     )
+
+
+# OCCT's Precision::Infinite(): the parameter range of an unbounded line, parabola or hyperbola.
+_INFINITE = 2e100
+
+
+def _require_bounded(first, last, kind):
+    if not (abs(first) < _INFINITE and abs(last) < _INFINITE):
+        raise InputError(f"the {kind} is unbounded (parameters {first:g} to {last:g}): trim it first")
 
 
 def _edge_bspline(edge):

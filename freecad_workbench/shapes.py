@@ -61,7 +61,13 @@ class _Shape:
     def control_point(self, i, j, r, s):
         """(point, weight) of Bézier point b_rs of patch (i, j) (i around the axis, j along
         the profile; r, s in 0..3) of the control structure in use."""
-        h = self.control().bezier[(i * self.control().nv + j) * 16 + 4 * r + s]
+        control = self.control()
+        for name, value, count in (("i", i, control.nu), ("j", j, control.nv), ("r", r, 4), ("s", s, 4)):
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+                raise InputError(f"control_point: {name} must be an integer, got {value!r}")
+            if not 0 <= value < count:
+                raise InputError(f"control_point: {name} = {value} is out of range 0..{count - 1}")
+        h = control.bezier[(i * control.nv + j) * 16 + 4 * r + s]
         return tuple(h[:3] / h[3]), float(h[3])
 
     def set_control(self, i, j, r, s, point, weight=None):

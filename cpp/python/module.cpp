@@ -19,7 +19,11 @@ PYBIND11_MODULE(_kernel, m) {
     } catch (const fairsplines::InputError& e) {
       inputError(e.what());
     } catch (const Standard_Failure& e) {
-      PyErr_SetString(PyExc_RuntimeError, (std::string("OpenCASCADE: ") + e.GetMessageString()).c_str());
+      // An OCCT failure the kernel's own checks did not foresee is still about this input
+      // (a degenerate or out-of-range curve): InputError, saying which OCCT check failed.
+      inputError((std::string("OpenCASCADE could not process this input (") + e.DynamicType()->Name() + ": " +
+                  e.GetMessageString() + ")")
+                     .c_str());
     }
   });
   fairsplines::python::bindCurves(m);

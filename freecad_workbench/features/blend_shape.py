@@ -183,6 +183,11 @@ def angle_lists(obj):
     if obj.Uniform:
         if obj.AroundCount < 1 or obj.ProfileCount < 1:
             raise InputError("the counts must be at least 1")
+        start, end = float(obj.ProfileStart), float(obj.ProfileEnd)
+        if not (math.isfinite(start) and math.isfinite(end)):
+            raise InputError("ProfileStart and ProfileEnd must be finite")
+        if not end > start:
+            raise InputError(f"ProfileEnd ({end:g}) must be greater than ProfileStart ({start:g})")
         return (_uniform(0.0, 360.0, obj.AroundCount),
                 _uniform(float(obj.ProfileStart), float(obj.ProfileEnd), obj.ProfileCount))
     around, profile = KIND_LISTS[obj.Kind]

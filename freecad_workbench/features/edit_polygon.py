@@ -22,6 +22,8 @@ B-spline) or an edge of an object. If the source gets a different number of pole
 breaks, the feature keeps its last good shape and names the problem in `Status`; set
 `PoleOffsets` to an empty list to start over.
 """
+import math
+
 import FreeCAD
 import Part
 
@@ -116,6 +118,8 @@ def edited_curve(obj):
             "restore the source, or clear PoleOffsets to start over"
         )
     for index, offset in enumerate(offsets, start=1):
+        if not all(math.isfinite(c) for c in offset):
+            raise InputError(f"PoleOffsets: the offset of pole {index} is not finite ({offset.x}, {offset.y}, {offset.z})")
         if offset.Length > 0.0:
             curve.setPole(index, curve.getPole(index) + offset)
     return curve

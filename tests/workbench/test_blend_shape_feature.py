@@ -315,3 +315,15 @@ def test_a_partial_turn_builds_an_open_blend(doc):
     points = surface_points(obj.Shape)
     angles = np.mod(np.degrees(np.arctan2(points[:, 1], points[:, 0])) + 1e-6, 360.0) - 1e-6
     assert angles.max() < 200.0 + 1e-6 and angles.max() > 199.0  # it spans the partial turn only
+
+
+def test_an_empty_profile_range_blames_the_range_not_the_count(doc):
+    """Issue 13: with Uniform, ProfileEnd == ProfileStart was reported against ProfileCount."""
+    from tests.scenes import assert_failed_like_freecad
+
+    blend = make_blend_shape(doc, "Cylinder")
+    assert blend.Status == "ok"
+    blend.ProfileEnd = blend.ProfileStart
+    doc.recompute()
+    assert_failed_like_freecad(blend, "ProfileEnd (0) must be greater than ProfileStart (0)")
+    assert "ProfileCount" not in blend.Status

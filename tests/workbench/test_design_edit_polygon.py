@@ -7,6 +7,7 @@ import pytest
 import FreeCAD
 
 import freecad_workbench as fw
+from tests.scenes import assert_failed_like_freecad
 from freecad_workbench.features.basic_curve import make_basic_curve
 from freecad_workbench.features.design_spline import make_design_spline, set_marks
 from freecad_workbench.features.edit_polygon import (
@@ -181,3 +182,15 @@ def test_save_reopen_recompute_gives_identical_edited_poles(doc, design, tmp_pat
         assert [tuple(p) for p in curve_of(edited).getPoles()] == before
     finally:
         FreeCAD.closeDocument(reopened.Name)
+
+
+def test_a_nan_offset_is_an_error_not_ignored(doc, design):
+    """Issue 13: NaN PoleOffsets were skipped with Status ok."""
+    edited = make_edit_polygon(doc, design)
+    good = [tuple(p) for p in curve_of(edited).getPoles()]
+    offsets = [V(0, 0, 0)] * len(good)
+    offsets[3] = V(float("nan"), 0, 0)
+    edited.PoleOffsets = offsets
+    doc.recompute()
+    assert_failed_like_freecad(edited, "PoleOffsets: the offset of pole 4 is not finite")
+    assert [tuple(p) for p in curve_of(edited).getPoles()] == good  # last good shape kept

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
@@ -168,7 +169,17 @@ std::optional<HomogeneousBezier> RationalBezierCurve::homogeneousCubic() const {
 
 std::unique_ptr<RationalBezierCurve> lineSegment(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {
   if (!p0.allFinite() || !p1.allFinite()) throw InputError("the line segment's end points are not finite");
-  if ((p1 - p0).norm() <= 1e-14 * std::max({1.0, p0.norm(), p1.norm()})) {
+  // Scale-free: compared in units of the larger coordinate, so that points near the
+  // largest doubles do not overflow (their difference may not be representable).
+  const double scale = std::max({p0.cwiseAbs().maxCoeff(), p1.cwiseAbs().maxCoeff(), 1e-300});
+  const Eigen::Vector3d a = p0 / scale, b = p1 / scale;
+  if (!((b - a).norm() * scale < std::numeric_limits<double>::infinity())) {
+    std::ostringstream msg;
+    msg << "the line segment is too long for double precision: its end points are " << (b - a).norm() << " x "
+        << scale << " apart";
+    throw InputError(msg.str());
+  }
+  if ((b - a).norm() <= 1e-14 * std::max({1.0 / scale, a.norm(), b.norm()})) {
     throw InputError("degenerate line segment: its end points coincide");
   }
   HomogeneousBezier h(2, 4);
@@ -314,7 +325,9 @@ Eigen::Vector3d ParametricCurve::d2(double u) const {
 std::unique_ptr<ParametricCurve> archimedeanSpiral(const Frame& frame, double a, double b, double theta0,
                                                    double theta1) {
   frame.check();
-  if (!std::isfinite(a) || !std::isfinite(b) || b == 0.0) throw InputError("degenerate spiral: b must be non-zero");
+  if (!std::isfinite(a)) throw InputError("the spiral's a is not finite");
+  if (!std::isfinite(b)) throw InputError("the spiral's b is not finite");
+  if (b == 0.0) throw InputError("degenerate spiral: b must be non-zero");
   if (!(theta1 > theta0)) throw InputError("degenerate spiral: its angle range must be increasing");
   // r = a + b theta must not vanish inside the range (the spiral would pass its centre).
   const double r0 = a + b * theta0, r1 = a + b * theta1;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "fairsplines/finite.hpp"
 
 namespace fairsplines {
 
@@ -242,6 +243,8 @@ Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J) 
   for (int r = 0; r < 4; ++r) {
     for (int s = 0; s < 4; ++s) {
       const auto h = surface.point(I, J, r, s);
+      requireFinite(h, "the patch (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ") of the shape",
+                    "homogeneous control points");
       if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
       poles.SetValue(r + 1, s + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
       weights.SetValue(r + 1, s + 1, h[3]);

@@ -18,6 +18,7 @@
 #include "fairsplines/blend_detail.hpp"
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/finite.hpp"
 
 namespace fairsplines {
 
@@ -391,6 +392,7 @@ Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch) {
   for (int a = 0; a < nu; ++a) {
     for (int b = 0; b < nv; ++b) {
       const auto h = patch.bezier.row(a * nv + b);
+      requireFinite(h, "a patch of the blend", "homogeneous control points");
       if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
       poles.SetValue(a + 1, b + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
       weights.SetValue(a + 1, b + 1, h[3]);

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <vector>
 
@@ -652,13 +653,26 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
     const Eigen::Index segments = options.closed ? n : n - 1;
     // The chords are written where the parameters go and turned into them in place.
     const double size = validateSamplesInto(q, options.closed, 3, "the csr-spline", t + 1);
+    if (!validEpsilon(options.epsilon)) throw InputError(kEpsilonMessage);
     if (options.parameters.size() > 0) {
       const Eigen::VectorXd given = validatedParameters(options.parameters, n, options.closed);
+      // Scale-free: a B-spline's poles do not change under an affine map of its knots, so
+      // they are computed on the parameters mapped onto [0, 1] (parameters 1e-300 or 1e200
+      // apart mean the same curve), and the knots are the parameters as given.
+      const double t0 = given[0], span = given[given.size() - 1] - t0;
+      if (!std::isfinite(span)) {
+        std::ostringstream msg;
+        msg << "the parameters run from " << t0 << " to " << given[given.size() - 1]
+            << ": their span is more than double precision holds";
+        throw InputError(msg.str());
+      }
+      const Eigen::VectorXd unit = (given.array() - t0) / span;
+      cubicPolesInto(q, unit.data(), options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0,
+                     poles);
       std::copy(given.data(), given.data() + given.size(), t);
-    } else {
-      parametersInto(t + 1, segments, options.parametrization, t);
+      return;
     }
-    if (!validEpsilon(options.epsilon)) throw InputError(kEpsilonMessage);
+    parametersInto(t + 1, segments, options.parametrization, t);
     cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
     return;
   }

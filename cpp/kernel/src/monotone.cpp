@@ -1230,8 +1230,10 @@ EndConditions analyzeEndConditions(const Eigen::Vector3d& p0, const Eigen::Vecto
 MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0,
                                        const Eigen::Vector3d& p1, const Eigen::Vector3d& t1, MonotoneMethod method,
                                        double gridStep) {
-  if (method == MonotoneMethod::PaperGrid && !(gridStep > 0.0 && gridStep <= 0.5)) {
-    throw InputError("the grid step must be in (0, 0.5], got " + num(gridStep));
+  // The search visits up to (0.5 / step)^4 points: the lower bound keeps it within seconds.
+  if (method == MonotoneMethod::PaperGrid && !(gridStep >= kMinGridStep && gridStep <= 0.5)) {
+    throw InputError("the grid step must be in [" + num(kMinGridStep) + ", 0.5] (the search grows as step^-4), got " +
+                     num(gridStep));
   }
   const Classified forward = classify(p0, t0, p1, t1);
   if (!forward.ec.admissible) throw NoMonotoneSolution("no monotone-curvature curve: " + forward.ec.reason);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "fairsplines/finite.hpp"
 
 namespace fairsplines {
 
@@ -85,9 +86,13 @@ BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisP
 }
 
 Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface) {
-  if (surface.poles.rows() != static_cast<Eigen::Index>(surface.nu) * surface.nv) {
-    throw InputError("a B-spline surface needs nu * nv poles");
+  if (surface.poles.rows() != static_cast<Eigen::Index>(surface.nu) * surface.nv || surface.poles.cols() != 3) {
+    throw InputError("a B-spline surface needs nu * nv poles of 3 coordinates");
   }
+  requireFinite(surface.poles, "the B-spline surface", "poles");
+  requireFinite(surface.weights, "the B-spline surface", "weights");
+  requireFinite(surface.knotsU, "the B-spline surface", "u knots");
+  requireFinite(surface.knotsV, "the B-spline surface", "v knots");
   TColgp_Array2OfPnt poles(1, surface.nu, 1, surface.nv);
   TColStd_Array2OfReal weights(1, surface.nu, 1, surface.nv);
   for (int i = 0; i < surface.nu; ++i) {

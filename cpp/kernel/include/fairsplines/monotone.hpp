@@ -141,7 +141,9 @@ struct MonotoneSpline {
 /// decreasing from C_0). Every result is verified by Theorem 1 and by the exact certificate
 /// (collinear ends give the straight segment).
 /// Throws NoMonotoneSolution when the family has no such curve (the message says why) or,
-/// for PaperGrid, when the grid finds none; InputError on bad input.
+/// for PaperGrid, when the grid finds none; InputError on bad input, and for a grid step
+/// below kMinGridStep (the grid search's work grows as step^-4).
+constexpr double kMinGridStep = 0.01;
 MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0,
                                        const Eigen::Vector3d& p1, const Eigen::Vector3d& t1,
                                        MonotoneMethod method = MonotoneMethod::Fairest, double gridStep = 0.02);

@@ -1,0 +1,114 @@
+"""Issue 13's rule at the kernel's boundary: a result that is not finite never leaves the
+kernel (InputError instead of NaN poles that Part would call valid); scale-free handling
+where the meaning does not depend on scale; OCCT failures and unbounded curves as
+InputError; bounded work. Each test here failed before its fix."""
+import math
+import time
+
+import numpy as np
+import pytest
+
+import FreeCAD
+import Part
+
+import freecad_workbench as fw
+from freecad_workbench import _kernel
+
+V = FreeCAD.Vector
+S_POINTS = [(0, 0), (1, 2), (2, 4.5), (3.5, 5)]
+
+
+def knots_and_poles(curve):
+    return np.array(curve.getKnots()), np.array([tuple(p) for p in curve.getPoles()])
+
+
+@pytest.mark.parametrize("closed", [False, True], ids=["open", "closed"])
+@pytest.mark.parametrize("scale", [1e200, 1e-300, 3.0], ids=["1e200", "1e-300", "3"])
+def test_csr_parameters_mean_the_same_curve_at_any_scale(scale, closed):
+    """An affine map of the parameters leaves a B-spline's poles alone: the fit with
+    parameters 1e200 or 1e-300 apart is the fit with parameters 1 apart, on the given knots."""
+    count = len(S_POINTS) + (1 if closed else 0)
+    unit = np.arange(count, dtype=float)
+    reference = fw.csr_spline(S_POINTS, closed=closed, parameters=unit)
+    scaled = fw.csr_spline(S_POINTS, closed=closed, parameters=unit * scale)
+    knots, poles = knots_and_poles(scaled)
+    np.testing.assert_allclose(knots, unit * scale, rtol=1e-15)
+    np.testing.assert_allclose(poles, knots_and_poles(reference)[1], rtol=1e-12, atol=1e-12)
+    assert np.isfinite(poles).all()
+
+
+def test_parameters_whose_span_overflows_are_refused_by_name():
+    with pytest.raises(fw.InputError, match="parameters run from .* more than double precision holds"):
+        fw.csr_spline(S_POINTS[:3], parameters=[-1.7e308, 0.0, 1.7e308])
+
+
+@pytest.mark.parametrize("make", [
+    lambda: fw.monotone_curvature_design((1, 0), [(1.7e308, 0), (1.7e308, 0)]),
+    lambda: fw.design_spline([(fw.basic.CircleArc((0, 0, 0), 1.7e308, 0, 3), [0.5])]),
+    lambda: fw.basic.CircleInvolute((1e308, -3.2, 1e308), 9.6, 0, 5).to_part(),
+    lambda: fw.shapes.Cylinder((0, 0, 0), 0.01, [0, 0.19, 1.75], [1e300, 1.79e308]).patches(),
+], ids=["monotone design", "design of a huge arc", "involute far away", "cylinder of huge heights"])
+def test_results_that_overflow_raise_input_error_instead_of_nan_geometry(make):
+    with pytest.raises(fw.InputError, match="not finite.*too large, too small or too close together"):
+        make()
+
+
+def test_the_kernel_checks_a_curve_before_it_reaches_occt():
+    """toOcct read poles through a null pointer (no knots) or with the wrong layout (1 or 4
+    columns): the layout is checked, then every number."""
+    def curve(poles, knots, mults):
+        return _kernel.BSplineCurve(np.asarray(poles, float), np.asarray(knots, float),
+                                    np.asarray(mults, np.int32), 3, False, np.zeros(0))
+
+    cases = [
+        (curve(np.zeros((4, 4)), [0, 1], [4, 4]), "rows of 2 or 3 coordinates, not 4"),
+        (curve(np.zeros((4, 1)), [0, 1], [4, 4]), "rows of 2 or 3 coordinates, not 1"),
+        (curve(np.zeros((4, 3)), [], []), "at least 2 knots"),
+        (curve(np.zeros((0, 3)), [0, 1], [4, 4]), "at least 2 poles"),
+        (curve([[0, 0, 0], [1, math.nan, 0], [2, 0, 0], [3, 0, 0]], [0, 1], [4, 4]), r"poles are not finite \(number 1"),
+        (curve(np.eye(4, 3), [0, math.inf], [4, 4]), "knots are not finite"),
+    ]
+    for kernel_curve, message in cases:
+        with pytest.raises(fw.InputError, match=message):
+            _kernel.edge_address(kernel_curve)
+
+
+@pytest.mark.parametrize("curve", [Part.Line(), Part.Hyperbola(), Part.Parabola()], ids=["line", "hyperbola", "parabola"])
+def test_unbounded_curves_are_named_and_asked_to_be_trimmed(curve):
+    for call in (fw.check_monotone_curvature, lambda c: fw.curvature_profile(c, 64),
+                 lambda c: fw.revolve_profile(c, (0, 0, 0), (0, 0, 1))):
+        with pytest.raises(fw.InputError, match="unbounded.*trim it first"):
+            call(curve)
+    trimmed = Part.Edge(Part.LineSegment(V(0, 0, 0), V(1, 0, 0)))
+    assert fw.check_monotone_curvature(trimmed).monotone
+
+
+def test_the_grid_baseline_has_a_smallest_step():
+    start = time.perf_counter()
+    with pytest.raises(fw.InputError, match=r"grid step must be in \[0.01, 0.5\]"):
+        fw.monotone_curvature_solution((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="grid", grid_step=1e-3)
+    assert time.perf_counter() - start < 1.0  # refused up front, not after minutes of search
+    assert fw.monotone_curvature_solution((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="grid", grid_step=0.05)
+
+
+@pytest.mark.parametrize("index, message", [
+    ((6, 5, 1, 2), "i = 6 is out of range"),
+    ((-1, 0, 0, 0), "i = -1 is out of range"),
+    ((0, 0, 4, 0), "r = 4 is out of range 0..3"),
+    ((0, 0, 0, 1.5), "s must be an integer"),
+])
+def test_control_point_indices_are_checked_not_wrapped(index, message):
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, [0, 2, 4, 2 * math.pi], [-0.5, 0, 0.5])
+    with pytest.raises(fw.InputError, match=message):
+        zone.control_point(*index)
+    point, weight = zone.control_point(0, 0, 0, 0)
+    assert np.isfinite(point).all() and weight > 0
+
+
+def test_basic_curve_messages_name_the_real_problem():
+    with pytest.raises(fw.InputError, match="too long for double precision"):
+        fw.basic.LineSegment((1.7e308, 0, 0), (-1.7e308, 0, 0))
+    with pytest.raises(fw.InputError, match="spiral's a is not finite"):
+        fw.basic.ArchimedeanSpiral(a=math.nan, b=1)
+    with pytest.raises(fw.InputError, match="coincide"):
+        fw.basic.LineSegment((1, 2, 3), (1, 2, 3))
