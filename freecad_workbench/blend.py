@@ -21,7 +21,7 @@ from collections import namedtuple
 
 from . import _kernel
 from .errors import InputError
-from .kernel import _BRIDGE, surface_from_part, surface_to_part
+from .kernel import adopt, has_bridge, surface_from_part, surface_to_part
 from .shapes import Cone, Cylinder, SphereZone, Torus
 
 BlendResult = namedtuple("BlendResult", "patches shell surface")
@@ -46,8 +46,8 @@ def _check(shape, continuity, method):
 def _shell(complex_):
     import Part
 
-    if _BRIDGE is not None:
-        return Part.__fromPythonOCC__(_BRIDGE.adopt_shape(complex_.shell_address()))
+    if has_bridge():
+        return adopt(complex_.shell_capsule())
     faces = [Part.Face(surface_to_part(s)) for _, _, _, s in complex_.patches()]
     shell = Part.Shell(faces)
     shell.sewShape()

@@ -5,7 +5,7 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError
-from .kernel import as_points, edge_curve, has_bridge, to_part
+from .kernel import adopt, as_points, has_bridge, to_part
 
 PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
 EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
@@ -39,7 +39,7 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
     t = _NO_PARAMETERS if parameters is None else np.asarray(parameters, dtype=float)
     args = (q, bool(closed), parametrization, float(epsilon), EPSILON_RULES[epsilon_rule], t)
     if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
-        return edge_curve(_kernel.csr_edge_address(*args))
+        return adopt(_kernel.csr_edge_capsule(*args)).Edge1.Curve
     return to_part(_kernel.csr_spline(*args))
 
 

@@ -60,7 +60,7 @@ def to_part(curve):
     Part.__fromPythonOCC__ (no copy of the data in Python). Without the SWIG bridge the
     arrays go into buildFromPolesMultsKnots. Both are bit-for-bit exact."""
     if _BRIDGE is not None:
-        return edge_curve(_kernel.edge_address(curve))
+        return adopt(_kernel.edge_capsule(curve)).Edge1.Curve
     return to_part_arrays(curve)
 
 
@@ -69,12 +69,14 @@ def has_bridge():
     return _BRIDGE is not None
 
 
-def edge_curve(address):
-    """The Part curve of a TopoDS_Edge the kernel built (an ``*_edge_address`` result),
-    taking ownership of it. Only with the bridge (has_bridge())."""
+def adopt(capsule):
+    """The Part.Shape of a shape the kernel built (a ``*_capsule`` result), taking it over:
+    the only caller of occ_bridge.adopt_shape. A capsule hands its shape over once (a
+    second adoption is a TypeError); one never adopted frees its shape when collected.
+    Only with the bridge (has_bridge())."""
     import Part
 
-    return Part.__fromPythonOCC__(_BRIDGE.adopt_shape(address)).Edge1.Curve
+    return Part.__fromPythonOCC__(_BRIDGE.adopt_shape(capsule))
 
 
 def to_part_arrays(curve):
@@ -99,8 +101,7 @@ def surface_to_part(surface):
     import Part
 
     if _BRIDGE is not None:
-        shape = Part.__fromPythonOCC__(_BRIDGE.adopt_shape(_kernel.face_address(surface)))
-        return shape.Face1.Surface
+        return adopt(_kernel.face_capsule(surface)).Face1.Surface
     poles = surface.poles.reshape(surface.nu, surface.nv, 3)
     result = Part.BSplineSurface()
     weights = surface.weights.reshape(surface.nu, surface.nv) if surface.weights.size else None

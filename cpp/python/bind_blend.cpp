@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "bindings.hpp"
+#include "shape_capsule.hpp"
 #include "fairsplines/blend_shapes.hpp"
 #include "fairsplines/blend_surface.hpp"
 #include "fairsplines/errors.hpp"
@@ -191,10 +192,9 @@ void bindBlend(py::module_& m) {
           "tolerance"_a = 1e-9,
           "One Geom_BSplineSurface of the complex, C2 (C1 for the Section 5 complexes), or None where it is not.")
       .def(
-          "shell_address",
+          "shell_capsule",
           [](const BlendComplex& c) {
-            // A heap TopoDS_Shape for occ_bridge.adopt_shape, which takes ownership.
-            return reinterpret_cast<std::uintptr_t>(new TopoDS_Shape(sewnShell(c)));
+            return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(sewnShell(c))));
           });
   m.def(
       "blend_sphere_zone",

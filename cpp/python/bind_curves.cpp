@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include "bindings.hpp"
+#include "shape_capsule.hpp"
 #include "fairsplines/analysis.hpp"
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/bspline.hpp"
@@ -116,26 +117,25 @@ void bindCurves(py::module_& m) {
       [](const BSplineCurve& curve, PointsRef q) { return maxDistanceToPoints(toOcct(curve), q); },
       "curve"_a, "points"_a);
   m.def(
-      "edge_address",
+      "edge_capsule",
       [](const BSplineCurve& curve) {
-        // A heap TopoDS_Shape for occ_bridge.adopt_shape, which takes ownership.
-        auto* shape = new TopoDS_Shape(BRepBuilderAPI_MakeEdge(toOcct(curve)).Edge());
-        return reinterpret_cast<std::uintptr_t>(shape);
+        return py::reinterpret_steal<py::object>(
+            newShapeCapsule(new TopoDS_Shape(BRepBuilderAPI_MakeEdge(toOcct(curve)).Edge())));
       },
-      "curve"_a, "Address of a new TopoDS_Edge holding the curve; pass it to occ_bridge.adopt_shape at once.");
+      "curve"_a, "A capsule owning a new TopoDS_Edge of the curve, for occ_bridge.adopt_shape (kernel.adopt).");
   m.def(
-      "csr_edge_address",
+      "csr_edge_capsule",
       [](PointsRef q, bool closed, const std::string& parametrization, double epsilon, EpsilonRule rule,
          const Eigen::VectorXd& t) {
         // csr_spline and edge_address in one call: the fit goes straight into OCCT
         // (csrSplineOcct) without a BSplineCurve for Python in between.
         const CsrOptions options{parseParametrization(parametrization), closed, epsilon, rule, t};
-        auto* shape = new TopoDS_Shape(BRepBuilderAPI_MakeEdge(csrSplineOcct(q, options)).Edge());
-        return reinterpret_cast<std::uintptr_t>(shape);
+        return py::reinterpret_steal<py::object>(
+            newShapeCapsule(new TopoDS_Shape(BRepBuilderAPI_MakeEdge(csrSplineOcct(q, options)).Edge())));
       },
       "points"_a, "closed"_a = false, "parametrization"_a = "chordal", "epsilon"_a = 1e-9,
       "rule"_a = EpsilonRule::CaseDistinction, "parameters"_a = Eigen::VectorXd(),
-      "Address of a new TopoDS_Edge holding the csr-spline; pass it to occ_bridge.adopt_shape at once.");
+      "A capsule owning a new TopoDS_Edge of the csr-spline, for occ_bridge.adopt_shape (kernel.adopt).");
   m.def(
       "to_brep",
       [](const BSplineCurve& curve) { return py::bytes(toBrepString(toOcct(curve))); }, "curve"_a,

@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "bindings.hpp"
+#include "shape_capsule.hpp"
 #include "fairsplines/basic_curves.hpp"
 #include "fairsplines/design.hpp"
 #include "fairsplines/errors.hpp"
@@ -123,11 +124,10 @@ void bindDesign(py::module_& m) {
   m.def("tensor_control_net", &tensorControlNet, "bezier"_a, "n_i"_a, "n_j"_a, "beta_u"_a, "beta_v"_a);
   m.def("revolve", &revolve, "profile"_a, "axis_point"_a, "axis_direction"_a);
   m.def(
-      "face_address",
+      "face_capsule",
       [](const BSplineSurface& surface) {
-        // A heap TopoDS_Face for occ_bridge.adopt_shape, which takes ownership.
-        auto* shape = new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face());
-        return reinterpret_cast<std::uintptr_t>(shape);
+        return py::reinterpret_steal<py::object>(newShapeCapsule(
+            new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face())));
       },
       "surface"_a);
 }

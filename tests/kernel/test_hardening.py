@@ -70,7 +70,7 @@ def test_the_kernel_checks_a_curve_before_it_reaches_occt():
     ]
     for kernel_curve, message in cases:
         with pytest.raises(fw.InputError, match=message):
-            _kernel.edge_address(kernel_curve)
+            _kernel.edge_capsule(kernel_curve)
 
 
 @pytest.mark.parametrize("curve", [Part.Line(), Part.Hyperbola(), Part.Parabola()], ids=["line", "hyperbola", "parabola"])
