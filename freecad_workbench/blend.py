@@ -41,6 +41,22 @@ def _check(shape, continuity, method):
         raise InputError(f"method must be one of {_METHODS}, not {method!r}")
     if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
         raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
+    check_cost(shape)
+
+
+# The most patches of a shape a blend takes: 400 arcs x 2 pieces (800 patches, the ring's
+# and the strip's besides) took 4.4 s here, most of it sewing the shell.
+MAX_PATCHES = 2048
+
+
+def check_cost(shape):
+    """Say the cost up front: a partition of more than MAX_PATCHES patches is refused with
+    its size, before any work (blends grow with arcs around x pieces along the profile)."""
+    g2 = shape.control()
+    patches = g2.nu * g2.nv
+    if patches > MAX_PATCHES:
+        raise InputError(f"this partition has {g2.nu} arcs around and {g2.nv} pieces along the profile: "
+                         f"{patches} patches, more than {MAX_PATCHES}; use fewer, longer arcs")
 
 
 def _shell(complex_):

@@ -1,8 +1,9 @@
 """Design with basic curves (csr paper, Sections 5, 6 and Fig. 9): basic curve pieces
 with marks to one non-uniform cubic C2 NURBS that keeps the pieces exact between the
 marks, rounds off the transitions, and whose control polygon can be edited freely."""
-from collections import namedtuple
+import math
 import numbers
+from collections import namedtuple
 
 import numpy as np
 
@@ -97,38 +98,51 @@ ApproximationError.__doc__ = (
 
 
 def approximation_error(curve, marks, samples=40):
-    """Measure the Section 5 approximation of a basic curve with the given marks."""
+    """Measure the Section 5 approximation of a basic curve with the given marks.
+
+    The quintic pieces are evaluated for all pieces and samples at once (numpy), so the
+    cost is one pass over marks x samples points, not a Python loop per point."""
     u = _kernel.complete_marks(piece_marks(curve, marks))
     m = len(u) - 1
-    quintic = _kernel.quintic_pieces(curve._curve, u)
-    binomial = np.array([1, 5, 10, 10, 5, 1], dtype=float)
+    quintic = np.asarray(_kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)
+    h = np.diff(u)
+    x = np.linspace(0.0, 1.0, samples + 1)
 
-    def curvature(d1, d2):
-        return np.linalg.norm(np.cross(d1, d2)) / np.linalg.norm(d1) ** 3
+    def bernstein(degree):
+        k = np.arange(degree + 1)
+        binomial = np.array([math.comb(degree, j) for j in k], dtype=float)
+        return binomial * (1 - x[:, None]) ** (degree - k) * x[:, None] ** k
 
-    qp = qk = 0.0
-    for i in range(m):
-        b = quintic[6 * i:6 * i + 6]
-        h = u[i + 1] - u[i]
-        for x in np.linspace(0, 1, samples + 1):
-            basis = binomial * (1 - x) ** (5 - np.arange(6)) * x ** np.arange(6)
-            p = basis @ b
-            # Derivatives of the quintic in u (1/h per order).
-            db = np.diff(b, axis=0)
-            basis4 = np.array([1, 4, 6, 4, 1]) * (1 - x) ** (4 - np.arange(5)) * x ** np.arange(5)
-            ddb = np.diff(b, 2, axis=0)
-            basis3 = np.array([1, 3, 3, 1]) * (1 - x) ** (3 - np.arange(4)) * x ** np.arange(4)
-            d1 = 5 * (basis4 @ db) / h
-            d2 = 20 * (basis3 @ ddb) / h**2
-            uu = u[i] + x * h
-            qp = max(qp, np.linalg.norm(p - curve._curve.value(uu)))
-            qk = max(qk, abs(curvature(d1, d2) - curvature(curve._curve.d1(uu), curve._curve.d2(uu))))
+    # Points and derivatives in u of every piece at every sample: (pieces, samples, dim).
+    p = np.einsum("sk,mkd->msd", bernstein(5), quintic)
+    d1 = 5 * np.einsum("sk,mkd->msd", bernstein(4), np.diff(quintic, axis=1)) / h[:, None, None]
+    d2 = 20 * np.einsum("sk,mkd->msd", bernstein(3), np.diff(quintic, 2, axis=1)) / h[:, None, None] ** 2
+    uu = (u[:-1, None] + x[None, :] * h[:, None]).ravel()
+    p, d1, d2 = (a.reshape(-1, a.shape[-1]) for a in (p, d1, d2))
+    exact, exact_k = _jets(curve, uu)
+    qp = float(np.max(np.linalg.norm(p - exact, axis=1)))
+    qk = float(np.max(np.abs(_curvature(d1, d2) - exact_k)))
     spline, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(curve._curve, u)], 0.0)
     part = to_part(spline)
-    cp = ck = 0.0
     lo, hi = (u[2], u[m - 2]) if m >= 4 else (0.0, 1.0)
-    for uu in np.linspace(lo, hi, samples * m + 1):
-        v = part.value(uu)
-        cp = max(cp, np.linalg.norm(np.array([v.x, v.y, v.z]) - curve._curve.value(uu)))
-        ck = max(ck, abs(part.curvature(uu) - curvature(curve._curve.d1(uu), curve._curve.d2(uu))))
+    t = np.linspace(lo, hi, samples * m + 1)
+    exact, exact_k = _jets(curve, t)
+    values = np.array([tuple(part.value(float(v))) for v in t])
+    kappa = np.array([part.curvature(float(v)) for v in t])
+    cp = float(np.max(np.linalg.norm(values - exact, axis=1)))
+    ck = float(np.max(np.abs(kappa - exact_k)))
     return ApproximationError(qp, qk, cp, ck)
+
+
+def _jets(curve, t):
+    """Points and curvatures of a basic curve at the parameters t (arrays)."""
+    values = np.array([curve._curve.value(float(v)) for v in t])
+    d1 = np.array([curve._curve.d1(float(v)) for v in t])
+    d2 = np.array([curve._curve.d2(float(v)) for v in t])
+    return values, _curvature(d1, d2)
+
+
+def _curvature(d1, d2):
+    """|d1 x d2| / |d1|^3, row by row for (n, 3) arrays or for one pair of vectors."""
+    d1, d2 = np.asarray(d1, dtype=float), np.asarray(d2, dtype=float)
+    return np.linalg.norm(np.cross(d1, d2), axis=-1) / np.linalg.norm(d1, axis=-1) ** 3

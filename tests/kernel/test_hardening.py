@@ -112,3 +112,27 @@ def test_basic_curve_messages_name_the_real_problem():
         fw.basic.ArchimedeanSpiral(a=math.nan, b=1)
     with pytest.raises(fw.InputError, match="coincide"):
         fw.basic.LineSegment((1, 2, 3), (1, 2, 3))
+
+
+def test_a_blend_says_its_cost_up_front():
+    """Issue 13: blends of about 400 arcs took 30-76 s; a partition beyond MAX_PATCHES is
+    refused at once, with its size."""
+    from freecad_workbench.blend import MAX_PATCHES
+
+    n = MAX_PATCHES // 2 + 1
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, np.linspace(0, 2 * math.pi, n + 1), [-0.5, 0, 0.5])
+    start = time.perf_counter()
+    with pytest.raises(fw.InputError, match=f"this partition has {n} arcs around and 2 pieces .* {2 * n} patches"):
+        fw.blend_basic_shape(zone)
+    assert time.perf_counter() - start < 1.0
+
+
+def test_approximation_error_of_many_marks_is_quick():
+    """Issue 13: 2000 marks took 15 s (a Python loop per sample point); the measure is the same."""
+    arc = fw.basic.CircleArc((0, 0, 0), 10, 0, 3)
+    few = fw.approximation_error(arc, [0.2, 0.4, 0.6, 0.8])
+    assert few.cubic_position < 1e-9  # a circle arc is kept exact between its marks
+    start = time.perf_counter()
+    many = fw.approximation_error(arc, [i / 2001 for i in range(1, 2001)])
+    assert time.perf_counter() - start < 10.0
+    assert many.cubic_position < 1e-9 and many.quintic_position < 1e-9
