@@ -121,7 +121,7 @@ def approximation_error(curve, marks, samples=40):
     p, d1, d2 = (a.reshape(-1, a.shape[-1]) for a in (p, d1, d2))
     exact, exact_k = _jets(curve, uu)
     qp = float(np.max(np.linalg.norm(p - exact, axis=1)))
-    qk = float(np.max(np.abs(_curvature(d1, d2) - exact_k)))
+    qk = _max_ignoring_undefined(np.abs(_curvature(d1, d2) - exact_k))
     spline, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(curve._curve, u)], 0.0)
     part = to_part(spline)
     lo, hi = (u[2], u[m - 2]) if m >= 4 else (0.0, 1.0)
@@ -130,7 +130,7 @@ def approximation_error(curve, marks, samples=40):
     values = np.array([tuple(part.value(float(v))) for v in t])
     kappa = np.array([part.curvature(float(v)) for v in t])
     cp = float(np.max(np.linalg.norm(values - exact, axis=1)))
-    ck = float(np.max(np.abs(kappa - exact_k)))
+    ck = _max_ignoring_undefined(np.abs(kappa - exact_k))
     return ApproximationError(qp, qk, cp, ck)
 
 
@@ -143,6 +143,14 @@ def _jets(curve, t):
 
 
 def _curvature(d1, d2):
-    """|d1 x d2| / |d1|^3, row by row for (n, 3) arrays or for one pair of vectors."""
+    """|d1 x d2| / |d1|^3, row by row for (n, 3) arrays or for one pair of vectors; NaN where
+    the curve stops (a cusp, as where an involute starts: no curvature there)."""
     d1, d2 = np.asarray(d1, dtype=float), np.asarray(d2, dtype=float)
-    return np.linalg.norm(np.cross(d1, d2), axis=-1) / np.linalg.norm(d1, axis=-1) ** 3
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.linalg.norm(np.cross(d1, d2), axis=-1) / np.linalg.norm(d1, axis=-1) ** 3
+
+
+def _max_ignoring_undefined(errors):
+    """The largest error where the curvature is defined (cusps give NaN; 0 if none is)."""
+    errors = errors[np.isfinite(errors)]
+    return float(errors.max()) if errors.size else 0.0

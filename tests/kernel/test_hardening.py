@@ -136,3 +136,14 @@ def test_approximation_error_of_many_marks_is_quick():
     many = fw.approximation_error(arc, [i / 2001 for i in range(1, 2001)])
     assert time.perf_counter() - start < 10.0
     assert many.cubic_position < 1e-9 and many.quintic_position < 1e-9
+
+
+def test_a_curve_that_does_not_move_is_refused_not_returned_as_a_point():
+    """Issue 13: a constant parametric curve raised OCCT's CurvatureNotDefined in
+    approximation_error, and design_spline returned a point."""
+    still = fw.basic.ParametricCurve(lambda s: (1.0, 2.0, 0.0))
+    for call in (lambda: fw.approximation_error(still, [0.3, 0.6]), lambda: fw.design_spline([(still, [0.3, 0.6])])):
+        with pytest.raises(fw.InputError, match="the curve does not move"):
+            call()
+    involute = fw.basic.CircleInvolute((0, 0, 0), 2, 0, 3)  # starts with zero speed (a cusp): still a curve
+    assert fw.design_spline([(involute, [0.25, 0.5, 0.75])]).NbPoles > 4

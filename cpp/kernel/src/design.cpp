@@ -94,6 +94,20 @@ PiecePolygon polygonFromJets(const PointMatrix& f, const PointMatrix& df, const 
     throw InputError("the 2-jets must have 3 (or 4, homogeneous) coordinates");
   }
   if (!f.allFinite() || !df.allFinite() || !d2f.allFinite()) throw InputError("the curve's 2-jets are not finite");
+  // A piece that does not move (its derivative vanishes at every mark, relative to the
+  // piece's size over its parameter range) would come out as a point: refused by name. A
+  // vanishing derivative at some marks only is a cusp the curve has (an involute starts so).
+  PointMatrix x(m + 1, 3), dx(m + 1, 3);  // Cartesian: d(P/w) = (dP - (P/w) dw) / w
+  for (Eigen::Index i = 0; i <= m; ++i) {
+    const double w = f.cols() == 4 ? f(i, 3) : 1.0, dw = f.cols() == 4 ? df(i, 3) : 0.0;
+    x.row(i) = f.row(i).head(3) / w;
+    dx.row(i) = (df.row(i).head(3) - x.row(i) * dw) / w;
+  }
+  const double size = (x.colwise().maxCoeff() - x.colwise().minCoeff()).norm();
+  const double scale = std::max(size, x.rowwise().norm().maxCoeff()) / (marks[m] - marks[0]);
+  if (!(dx.rowwise().norm().maxCoeff() > 1e-12 * scale) && !(size > 0.0)) {
+    throw InputError("the curve does not move: its derivative vanishes at every mark and its points coincide");
+  }
   auto lift = [&](const Eigen::RowVectorXd& r) {
     Eigen::RowVector4d h(0, 0, 0, 1);
     h.head(r.size()) = r;
