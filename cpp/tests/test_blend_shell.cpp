@@ -30,7 +30,8 @@ using namespace fairsplines::test::blend;
 
 namespace {
 
-ShapeOfRevolution zoneShape(const ShapeFrame& f, double radius, const Eigen::VectorXd& around, const Eigen::VectorXd& lat) {
+ShapeOfRevolution zoneShape(const ShapeFrame& f, double radius, const Eigen::VectorXd& around,
+                            const Eigen::VectorXd& lat) {
   ShapeOfRevolution s;
   s.kind = ShapeOfRevolution::Kind::SphereZone;
   s.frame = f;
@@ -83,7 +84,8 @@ TEST(BlendShell, InteriorEdgesAreSharedByTwoFacesAndOnlyTheOpenEndsAreFree) {
       {"zone C1", blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), lat))},
       {"partial zone", blendSphereZone(f, 1.0, part, lat, CircleReparam::Mixed, nullptr, true)},
       {"cone", blendCone(f, 1.0, 0.4, nonUniformTurn(), vec({0.0, 0.5, 1.5}), CircleReparam::Sigma, nullptr, true)},
-      {"torus", blendTorus(f, 3.0, 1.0, nonUniformTurn(), vec({-1.0, 0.0, 1.0, 2.0}), CircleReparam::Rho, nullptr, true)},
+      {"torus",
+       blendTorus(f, 3.0, 1.0, nonUniformTurn(), vec({-1.0, 0.0, 1.0, 2.0}), CircleReparam::Rho, nullptr, true)},
   };
   for (const Case& c : cases) {
     const BlendShell built = blendShell(c.complex);
@@ -207,7 +209,8 @@ TEST(BlendShell, GapsBeyondOneBillionthAreNamedSmallerOnesBecomeTheEdgesToleranc
   auto moved = [](BlendComplex m, int index, int coordinate, double by) {
     TaggedPatch& p = m.patches[index];
     const int dv = p.degreeV;
-    for (int b = 1; b < dv; ++b) p.bezier(p.degreeU * (dv + 1) + b, coordinate) += by * p.bezier(p.degreeU * (dv + 1) + b, 3);
+    for (int b = 1; b < dv; ++b)
+      p.bezier(p.degreeU * (dv + 1) + b, coordinate) += by * p.bezier(p.degreeU * (dv + 1) + b, 3);
     return m;
   };
   const int a = indexOf(1, 1), b = indexOf(2, 1);

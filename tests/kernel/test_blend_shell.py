@@ -180,5 +180,5 @@ def test_shell_failures_name_the_patch_and_the_cause():
 def test_shell_report_measures_the_gaps():
     report = _c2(_zone()).shell_report()
     assert report["max_gap"] < 1e-14 * 4
-    assert report["allowed_gap"] == pytest.approx(1e-9 * 2 * 2 * math.sqrt(3), rel=0.5)
+    assert report["allowed_gap"] == pytest.approx(1e-9 * 4 * math.sqrt(3), rel=0.5)
     assert report["free_edges"] > 0 and report["degenerated"] == 0

@@ -14,12 +14,11 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
-#include <gp_Dir2d.hxx>
-#include <gp_Pnt2d.hxx>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <gp_Dir2d.hxx>
+#include <gp_Pnt2d.hxx>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -54,15 +53,16 @@ Homogeneous4 sidePoints(const TaggedPatch& p, Side side) {
 
 /// The side's points at t = s / kSamples (de Casteljau on the homogeneous points, projected).
 std::vector<Eigen::Vector3d> sampled(const Homogeneous4& h) {
+  const Eigen::Index n = h.rows();
   std::vector<Eigen::Vector3d> out(kSamples + 1);
-  Homogeneous4 work(h.rows(), 4);
+  std::vector<Eigen::Vector4d> work(static_cast<size_t>(n));
   for (int s = 0; s <= kSamples; ++s) {
     const double t = static_cast<double>(s) / kSamples;
-    work = h;
-    for (Eigen::Index r = h.rows() - 1; r > 0; --r) {
-      for (Eigen::Index k = 0; k < r; ++k) work.row(k) = (1 - t) * work.row(k) + t * work.row(k + 1);
+    for (Eigen::Index k = 0; k < n; ++k) work[k] = h.row(k).transpose();
+    for (Eigen::Index r = n - 1; r > 0; --r) {
+      for (Eigen::Index k = 0; k < r; ++k) work[k] = (1 - t) * work[k] + t * work[k + 1];
     }
-    out[s] = work.row(0).head<3>().transpose() / work(0, 3);
+    out[s] = work[0].head<3>() / work[0][3];
   }
   return out;
 }
@@ -145,7 +145,8 @@ BlendShell blendShell(const BlendComplex& complex) {
   const double extent = (high - low).norm();
   if (!std::isfinite(extent)) throw InputError("the complex is too large for double precision (its extent overflows)");
   BlendShell out;
-  out.allowedGap = 1e-9 * extent + 1e-12 * magnitude;
+  // 1e-9 of the size, plus about 500 rounding units of the coordinates (far from the origin).
+  out.allowedGap = 1e-9 * extent + 1e-13 * magnitude;
   out.tolerance = std::max(Precision::Confusion(), 1e-14 * magnitude);
 
   // The grid: cell (k, j) holds the patch over u piece k in row j.
@@ -213,7 +214,8 @@ BlendShell blendShell(const BlendComplex& complex) {
   auto spread = [](const Homogeneous4& h) {
     double d = 0.0;
     const Eigen::Vector3d first = h.row(0).head<3>().transpose() / h(0, 3);
-    for (Eigen::Index k = 1; k < h.rows(); ++k) d = std::max(d, (h.row(k).head<3>().transpose() / h(k, 3) - first).norm());
+    for (Eigen::Index k = 1; k < h.rows(); ++k)
+      d = std::max(d, (h.row(k).head<3>().transpose() / h(k, 3) - first).norm());
     return d;
   };
   UnionFind corners(columns * (R + 1));
@@ -227,23 +229,28 @@ BlendShell blendShell(const BlendComplex& complex) {
       // A side along the profile never collapses on a shape of revolution (only rows do, at a pole).
       std::ostringstream os;
       os.precision(3);
-      os << "the " << kSideNames[a.side] << " side of " << patchName(complex, a.patch) << " collapses to a point (" << length
-         << " long, below the tolerance " << out.tolerance << " of a complex " << extent
+      os << "the " << kSideNames[a.side] << " side of " << patchName(complex, a.patch) << " collapses to a point ("
+         << length << " long, below the tolerance " << out.tolerance << " of a complex " << extent
          << " in size): the shape is too thin along its profile for its size";
       throw InputError(os.str());
     }
     double gap = 0.0;
     if (b.patch >= 0) {
-      const std::vector<Eigen::Vector3d> pa = sampled(ha), pb = sampled(sides[b.patch][b.side]);
-      for (int s = 0; s <= kSamples; ++s) gap = std::max(gap, (pa[s] - pb[s]).norm());
+      const Homogeneous4& hb = sides[b.patch][b.side];
+      if (ha.rows() != hb.rows() || ha != hb) {  // the same points are the same curve: no gap
+        const std::vector<Eigen::Vector3d> pa = sampled(ha), pb = sampled(hb);
+        for (int s = 0; s <= kSamples; ++s) gap = std::max(gap, (pa[s] - pb[s]).norm());
+      }
       if (gap > out.allowedGap) {
         std::ostringstream os;
         os.precision(3);
         os << "the patches do not meet: " << patchName(complex, a.patch) << " and " << patchName(complex, b.patch)
            << " are " << gap << " apart along their shared side (the " << kSideNames[a.side] << " of the first, the "
            << kSideNames[b.side] << " of the second";
-        if (a.side == Right && a.patch == at(K - 1, complex.patches[a.patch].vPiece) && closed) os << ", where the turn closes";
-        os << "), more than the " << out.allowedGap << " allowed (1e-9 of the complex's size " << extent << ")";
+        if (a.side == Right && a.patch == at(K - 1, complex.patches[a.patch].vPiece) && closed)
+          os << ", where the turn closes";
+        os << "), more than the " << out.allowedGap << " allowed (1e-9 of the complex's size " << extent
+           << " plus 1e-13 of its largest coordinate " << magnitude << ")";
         throw InputError(os.str());
       }
     }
@@ -266,7 +273,8 @@ BlendShell blendShell(const BlendComplex& complex) {
     const TaggedPatch& p = complex.patches[i];
     const int k = p.uPiece, j = p.vPiece;
     const std::array<int, 4> ids = {corner(k, j), corner(k + 1, j), corner(k + 1, j + 1), corner(k, j + 1)};
-    const std::array<int, 4> rows = {0, p.degreeU * (p.degreeV + 1), p.degreeU * (p.degreeV + 1) + p.degreeV, p.degreeV};
+    const std::array<int, 4> rows = {0, p.degreeU * (p.degreeV + 1), p.degreeU * (p.degreeV + 1) + p.degreeV,
+                                     p.degreeV};
     for (int c = 0; c < 4; ++c) {
       const int root = corners.find(ids[c]);
       const Eigen::Vector3d q = p.bezier.row(rows[c]).head<3>().transpose() / p.bezier(rows[c], 3);
@@ -280,7 +288,8 @@ BlendShell blendShell(const BlendComplex& complex) {
         os.precision(3);
         os << "the patches do not meet: a corner of " << patchName(complex, i) << " is " << d
            << " from the other patches' corner there, more than the " << out.allowedGap
-           << " allowed (1e-9 of the complex's size " << extent << ")";
+           << " allowed (1e-9 of the complex's size " << extent << " plus 1e-13 of its largest coordinate " << magnitude
+           << ")";
         throw InputError(os.str());
       }
       out.maxGap = std::max(out.maxGap, d);
@@ -288,7 +297,8 @@ BlendShell blendShell(const BlendComplex& complex) {
     }
   }
   for (const GridEdge& e : edges) {
-    for (int c : {e.from, e.to}) vertexTolerance[corners.find(c)] = std::max(vertexTolerance[corners.find(c)], e.tolerance);
+    for (int c : {e.from, e.to})
+      vertexTolerance[corners.find(c)] = std::max(vertexTolerance[corners.find(c)], e.tolerance);
   }
 
   try {

@@ -177,7 +177,7 @@ struct BlendShell {
   TopoDS_Shell shell;
   double maxGap = 0.0;     ///< largest distance between two patches along a shared edge or at a shared corner
   double tolerance = 0.0;  ///< the edges' least tolerance (Precision::Confusion(), more for huge coordinates)
-  double allowedGap = 0.0; ///< the largest gap accepted: 1e-9 of the complex's size (plus rounding of its coordinates)
+  double allowedGap = 0.0; ///< the largest gap accepted: 1e-9 of the complex's size plus 1e-13 of its largest coordinate
   int freeEdges = 0;       ///< edges on one face only, degenerated ones not counted (0: the shell is closed)
   int degenerated = 0;     ///< patch sides collapsed to a point (a pole row)
 };
