@@ -1,5 +1,5 @@
 // Benchmark (issue 5): time to build the blend complex of a sphere zone with 8 x 4 patches
-// plus its default free-form ring (kernel only), per reparameterization. The GeomPlate G2
+// plus its default free-form ring (kernel only), per reparameterization, and its shell. The GeomPlate G2
 // comparison of the issue is not in yet (see docs/BLENDING.md).
 #include <algorithm>
 #include <chrono>
@@ -46,5 +46,20 @@ int main() {
     std::printf("  %-20s %8.3f ms  (%zu patches, C1 Section 5, basic %s)\n", "non-uniform, C1", 1e3 * c1, patches,
                 quarticInV ? "(4,4)" : "(4,2)");
   }
+  // The shell from the grid (blendShell: shared edges, no sewing) and the single C2 surface,
+  // what fw.blend_basic_shape hands over, for the 8 x 4 zone of bench/bench_blend.py
+  // (uniform longitudes, sexticInV as the macro API), and for the steep cone of issue 13.
+  const BlendComplex zone = blendSphereZone(ShapeFrame{}, 10.0, uniform, latitudes, CircleReparam::Rho, nullptr, true);
+  const double shell = medianSeconds([&] { blendShell(zone); }, 200);
+  const double single = medianSeconds([&] { singleSurface(zone); }, 200);
+  std::printf("  %-20s %8.3f ms  (blendShell, %zu faces)\n", "uniform, shell", 1e3 * shell, zone.patches.size());
+  std::printf("  %-20s %8.3f ms  (singleSurface)\n", "uniform, surface", 1e3 * single);
+  Eigen::VectorXd thirds(4), heights(3);
+  thirds << 0.0, 2 * pi / 3, 4 * pi / 3, 2 * pi;
+  heights << 0.0, 1.0, 2.0;
+  const double steep = medianSeconds([&] {
+    blendShell(blendCone(ShapeFrame{}, 1.0, 1e12, thirds, heights, CircleReparam::Rho, nullptr, true));
+  }, 50);
+  std::printf("  %-20s %8.3f ms  (cone slope 1e12, complex and shell; sewing took 10-16 s)\n", "steep cone", 1e3 * steep);
   return 0;
 }

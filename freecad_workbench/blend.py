@@ -4,7 +4,7 @@ paper, Section 4.2), and the naive baseline of Fig. 2a.
     zone = fw.shapes.SphereZone((0, 0, 0), 10, longitudes, latitudes)
     result = fw.blend_basic_shape(zone)          # default free-form ring
     result.patches   # [(role, Part.BSplineSurface)], role 'basic', 'transition', 'freeform'
-    result.shell     # Part.Shell of all patches, sewn
+    result.shell     # Part.Shell of all patches, sharing their edges (STEP-ready)
     result.surface   # one C2 Part.BSplineSurface of the complex (or None)
 
 Shapes of revolution over a full turn around their axis or part of one, joined at the end
@@ -27,7 +27,8 @@ from .shapes import Cone, Cylinder, SphereZone, Torus
 BlendResult = namedtuple("BlendResult", "patches shell surface")
 BlendResult.__doc__ = (
     "patches: [(role, Part.BSplineSurface)] with role 'basic', 'transition' or 'freeform'; "
-    "shell: the patches sewn into a Part.Shell; surface: one Part.BSplineSurface that OCCT "
+    "shell: a Part.Shell with one face per patch (in the same order), neighbours sharing their edges; "
+    "surface: one Part.BSplineSurface that OCCT "
     "reports C2, or None where the complex is not C2 (the naive baseline)."
 )
 
@@ -59,21 +60,33 @@ def check_cost(shape):
                          f"{patches} patches, more than {MAX_PATCHES}; use fewer, longer arcs")
 
 
-def _shell(complex_):
+def _result(complex_, single=True):
+    """The BlendResult of a kernel BlendComplex. With the bridge, in one hand-over: the kernel
+    builds the shell from its grid (shared edges, no sewing) and the single surface, and
+    FreeCAD adopts both as one compound; the patches are the shell's faces' surfaces (the
+    same Part.BSplineSurface, bit for bit, as a hand-over of each patch)."""
+    if has_bridge():
+        parts = adopt(complex_.result_capsule(single)).childShapes()
+        shell = parts[0]
+        roles = complex_.roles()
+        faces = shell.Faces
+        if len(faces) != len(roles):
+            raise InputError(f"the shell has {len(faces)} faces for {len(roles)} patches")
+        patches = [(role, face.Surface) for role, face in zip(roles, faces)]
+        return BlendResult(patches, shell, parts[1].Surface if len(parts) > 1 else None)
+    return _result_arrays(complex_, single)
+
+
+def _result_arrays(complex_, single=True):
+    """_result without the bridge: every patch and the single surface through arrays, the
+    shell sewn by Part from the patches' faces."""
     import Part
 
-    if has_bridge():
-        return adopt(complex_.shell_capsule())
-    faces = [Part.Face(surface_to_part(s)) for _, _, _, s in complex_.patches()]
-    shell = Part.Shell(faces)
-    shell.sewShape()
-    return shell
-
-
-def _result(complex_, single=True):
     patches = [(role, surface_to_part(s)) for role, _, _, s in complex_.patches()]
     surface = complex_.single_surface() if single else None
-    return BlendResult(patches, _shell(complex_), surface_to_part(surface) if surface is not None else None)
+    shell = Part.Shell([Part.Face(s) for _, s in patches])
+    shell.sewShape()
+    return BlendResult(patches, shell, surface_to_part(surface) if surface is not None else None)
 
 
 def _ring(shape, freeform):

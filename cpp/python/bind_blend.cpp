@@ -5,6 +5,8 @@
 #include <pybind11/stl.h>
 
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
 #include <Precision.hxx>
 #include <TopoDS_Shape.hxx>
 #include <cstdint>
@@ -192,10 +194,50 @@ void bindBlend(py::module_& m) {
           "tolerance"_a = 1e-9,
           "One Geom_BSplineSurface of the complex, C2 (C1 for the Section 5 complexes), or None where it is not.")
       .def(
+          "roles", [](const BlendComplex& c) {
+            py::list out;
+            for (const TaggedPatch& p : c.patches) out.append(roleOf(p.role));
+            return out;
+          },
+          "The role of every patch ('basic', 'transition', 'freeform'), in the order of patches().")
+      .def(
           "shell_capsule",
           [](const BlendComplex& c) {
-            return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(sewnShell(c))));
-          });
+            return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(blendShell(c).shell)));
+          },
+          "A capsule owning the complex's shell (blendShell: the grid's own topology, no sewing), for kernel.adopt.")
+      .def(
+          "result_capsule",
+          [](const BlendComplex& c, bool single, double tolerance) {
+            // One hand-over for the whole result: a compound of the shell and, where the
+            // complex is C2 (C1) and asked for, a face on its single surface.
+            BRep_Builder builder;
+            TopoDS_Compound compound;
+            builder.MakeCompound(compound);
+            builder.Add(compound, blendShell(c).shell);
+            if (single) {
+              Handle(Geom_BSplineSurface) surface;
+              try {
+                surface = singleSurface(c, tolerance, c.smoothness);
+              } catch (const InputError&) {
+                // not a C2 (C1) tensor grid (e.g. the naive baseline): no single surface
+              }
+              if (!surface.IsNull()) builder.Add(compound, BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face());
+            }
+            return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(compound)));
+          },
+          "single"_a = true, "tolerance"_a = 1e-9,
+          "A capsule owning a compound of the shell (its faces the patches, in order) and, if single and the complex "
+          "has one, a face on the single C2 (C1) surface.")
+      .def(
+          "shell_report",
+          [](const BlendComplex& c) {
+            const BlendShell s = blendShell(c);
+            return py::dict("max_gap"_a = s.maxGap, "tolerance"_a = s.tolerance, "allowed_gap"_a = s.allowedGap,
+                            "free_edges"_a = s.freeEdges, "degenerated"_a = s.degenerated);
+          },
+          "What building the shell measured: max_gap (between patches sharing a side or corner), tolerance (the "
+          "edges' least), allowed_gap, free_edges (on one face only), degenerated (sides collapsed to a point).");
   m.def(
       "blend_sphere_zone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,

@@ -311,9 +311,9 @@ TEST(C1Blend, UserRingOnTheInterfaceKnotsIsKeptExactly) {
   EXPECT_LT(worst, 1e-12);
 }
 
-TEST(C1Blend, PatchesSewIntoOneValidShell) {
+TEST(C1Blend, PatchesMakeOneValidShell) {
   const BlendComplex c = blendC1(g1SphereZone(tilted(), 1.0, nonUniformTurn(), kLatitudes));
-  const TopoDS_Shape shell = sewnShell(c);
+  const TopoDS_Shape shell = blendShell(c).shell;
   EXPECT_EQ(shell.ShapeType(), TopAbs_SHELL);
   EXPECT_TRUE(BRepCheck_Analyzer(shell).IsValid());
   int faces = 0;
@@ -379,7 +379,7 @@ TEST(C1Join, TwoDifferentlyPartitionedToriJoinC1AndStayExact) {
   };
   EXPECT_LT(offShape(basicOf(c), torus), 1e-10 * 4);
   EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
-  EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+  EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
   // Judged on uniform knots instead, the same complex fails: the check can fail.
   const Eigen::VectorXd uniform = Eigen::VectorXd::LinSpaced(c.piecesU + 1, 0.0, c.piecesU);
   EXPECT_GT(c1Seams(c, &uniform).alongU, 1e-3);

@@ -217,9 +217,9 @@ TEST(SphereBlend, BothDirectionsC2GiveOneC2Surface) {
   EXPECT_THROW(singleSurface(blendSphereZoneNaive(f, R, nonUniformTurn(), lat)), InputError);
 }
 
-TEST(SphereBlend, PatchesSewIntoOneValidShell) {
+TEST(SphereBlend, PatchesMakeOneValidShell) {
   const BlendComplex c = blendSphereZone(tilted(), 1.0, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}));
-  const TopoDS_Shape shell = sewnShell(c);
+  const TopoDS_Shape shell = blendShell(c).shell;
   EXPECT_EQ(shell.ShapeType(), TopAbs_SHELL);
   EXPECT_TRUE(BRepCheck_Analyzer(shell).IsValid());
   int faces = 0;
@@ -377,7 +377,7 @@ TEST(JoinShapes, ToriWithDifferentCrossSectionalPartitionsJoinWithoutKnotInserti
   EXPECT_LT(offSide(c, true, offTorus), 1e-10 * 4);
   EXPECT_LT(seams(c).worst, 1e-8);
   EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
-  EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+  EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
 }
 
 TEST(JoinShapes, CylinderIntoASphericalDome) {
@@ -535,7 +535,7 @@ TEST(PartialTurn, OpenSphereZoneAndConesBlendC2WithDefaultAndUserRings) {
     EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
     EXPECT_LT(seams(c).worst, 1e-8);
     EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
-    EXPECT_TRUE(BRepCheck_Analyzer(sewnShell(c)).IsValid());
+    EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
   }
   // A user ring on its own (uniform, clamped) knots; one turning the other way is refused.
   const Handle(Geom_BSplineSurface) ring = defaultSphereRing(f, 1.0, lon, lat, Eigen::VectorXd::LinSpaced(5, 0.0, 8.0));

@@ -132,7 +132,7 @@ _DIMENSIONS = tuple(sorted({p for props in KIND_PROPERTIES.values() for p in pro
 
 class BlendShape(FeatureProxy):
     """Proxy of a Part::FeaturePython: a basic shape blended into a free-form ring, as a
-    sewn shell."""
+    shell whose patches share their edges."""
 
     Type = "BlendShape"
     VERSION = 2  # 2: FreeForm, Interface, JoinTo, Continuity

@@ -33,13 +33,15 @@ def surface_points(shape, n=4):
 
 
 @pytest.mark.parametrize("kind", KINDS)
-def test_every_kind_builds_a_valid_sewn_shell(doc, kind):
+def test_every_kind_builds_a_valid_shell_of_shared_edges(doc, kind):
     obj = make_blend_shape(doc, kind)
     assert is_blend_shape(obj) and isinstance(obj.Proxy, BlendShape)
     assert obj.Status == "ok" and obj.Uniform
     shape = obj.Shape
     assert shape.ShapeType == "Shell" and shape.isValid()
     assert obj.Patches == "basic 18, transition 6, freeform 6" and len(shape.Faces) == 30
+    # 6 pieces around a full turn, 5 rows: neighbours share their edges, only both ends are free
+    assert len(shape.Edges) == 6 * 6 + 6 * 5 and len(shape.getFreeEdges().Edges) == 2 * 6
     # the object's own editor shows the kind's dimensions only
     for name in KIND_LISTS[kind]:
         assert obj.getEditorMode(name) == ["Hidden"]  # uniform: the lists are generated

@@ -1,11 +1,6 @@
 #include "fairsplines/blend_surface.hpp"
 
-#include <BRepBuilderAPI_MakeFace.hxx>
-#include <BRepBuilderAPI_Sewing.hxx>
 #include <Standard_Failure.hxx>
-#include <TopAbs_ShapeEnum.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Face.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -1013,23 +1008,6 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
     }
   }
   return s;
-}
-
-TopoDS_Shape sewnShell(const BlendComplex& complex, double tolerance) {
-  double size = 0.0;
-  for (const TaggedPatch& p : complex.patches) {
-    for (Eigen::Index k = 0; k < p.bezier.rows(); ++k) size = std::max(size, (p.bezier.row(k).head<3>() / p.bezier(k, 3)).norm());
-  }
-  BRepBuilderAPI_Sewing sewing(tolerance * std::max(size, 1.0));
-  for (const TaggedPatch& p : complex.patches) {
-    BRepBuilderAPI_MakeFace face(patchToOcct(p), 1e-9 * std::max(size, 1.0));
-    if (!face.IsDone()) throw InputError("a patch could not be made into a face");
-    sewing.Add(face.Face());
-  }
-  sewing.Perform();
-  TopoDS_Shape shell = sewing.SewedShape();
-  if (shell.IsNull() || shell.ShapeType() != TopAbs_SHELL) throw InputError("the patches did not sew into one shell");
-  return shell;
 }
 
 }  // namespace fairsplines

@@ -5,6 +5,7 @@
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Shape.hxx>
+#include <TopoDS_Shell.hxx>
 #include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
@@ -171,8 +172,27 @@ C2SexticSpline refineArcs(const C2SexticSpline& c2, const std::vector<int>& part
 /// new interval lengths and firstPiece the arcs. Throws InputError for cuts out of order.
 C2SexticSpline splitPieces(const C2SexticSpline& c2, const std::vector<std::vector<double>>& cuts);
 
-/// Every patch as a face, sewn into one shell (BRepBuilderAPI_Sewing, tolerance relative
-/// to the complex's size). Throws InputError if sewing does not give a single shell.
-TopoDS_Shape sewnShell(const BlendComplex& complex, double tolerance = 1e-7);
+/// The shell of a complex and what building it measured (blendShell).
+struct BlendShell {
+  TopoDS_Shell shell;
+  double maxGap = 0.0;     ///< largest distance between two patches along a shared edge or at a shared corner
+  double tolerance = 0.0;  ///< the edges' least tolerance (Precision::Confusion(), more for huge coordinates)
+  double allowedGap = 0.0; ///< the largest gap accepted: 1e-9 of the complex's size plus 1e-13 of its largest coordinate
+  int freeEdges = 0;       ///< edges on one face only, degenerated ones not counted (0: the shell is closed)
+  int degenerated = 0;     ///< patch sides collapsed to a point (a pole row)
+};
+
+/// The complex's patches as one shell with the topology of its grid, without sewing: one
+/// TopoDS_Vertex per grid corner (one per pole where a row collapses), one TopoDS_Edge per
+/// patch side, shared by the two patches it bounds (its 3D curve the first patch's
+/// boundary iso-curve, a straight pcurve on each face in the face's [0,1]^2), closed around
+/// the axis where the complex is (closedU), every face oriented like its patch (du x dv),
+/// so shared edges run opposite ways in their two faces. An edge's tolerance is the largest
+/// deviation measured between its two patches' boundary curves (at least
+/// BlendShell::tolerance). Throws InputError naming the patch, the edge and the deviation
+/// where two patches that share a side or a corner are more than allowedGap apart, where a
+/// patch has numbers that are not finite or a weight <= 0, and where the patches are not a
+/// tensor grid (every u piece in every row exactly once).
+BlendShell blendShell(const BlendComplex& complex);
 
 }  // namespace fairsplines
