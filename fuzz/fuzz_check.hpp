@@ -1,0 +1,182 @@
+// The contract every harness checks (fuzz/README.md): a kernel call either throws the
+// kernel's InputError (NoMonotoneSolution is one) with a message, or returns a result whose
+// every number is finite. Anything else is a finding: the harness prints what broke and
+// aborts, and libFuzzer saves the input (crash-<sha1>) with the stack trace.
+#pragma once
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <functional>
+#include <string>
+#include <utility>
+#include <typeinfo>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Standard_Failure.hxx>
+#include <Standard_Type.hxx>
+
+#include "fairsplines/errors.hpp"
+#include "fairsplines/occt.hpp"
+#include "fairsplines/types.hpp"
+
+namespace fairsplines::fuzz {
+
+// --- The decoded input, printed with a finding ---------------------------------------------
+
+inline std::string format(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+inline std::string format(int x) { return std::to_string(x); }
+inline std::string format(bool x) { return x ? "true" : "false"; }
+inline std::string format(const char* x) { return x; }
+inline std::string format(const std::string& x) { return x; }
+
+/// A vector as [a, b, ...]; a matrix as rows [[...], [...]].
+template <class Derived>
+std::string format(const Eigen::DenseBase<Derived>& m) {
+  std::string out = "[";
+  const bool vector = m.rows() == 1 || m.cols() == 1;
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    if (!vector) out += (i ? ", [" : "[");
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      if ((vector && (i || j)) || (!vector && j)) out += ", ";
+      out += format(static_cast<double>(m(i, j)));
+    }
+    if (!vector) out += "]";
+  }
+  return out + "]";
+}
+
+inline std::string format(const BSplineCurve& c) {
+  return "{degree " + format(c.degree) + ", periodic " + format(c.periodic) + ", poles " + format(c.poles) +
+         ", weights " + format(c.weights) + ", knots " + format(c.knots) + ", mults " + format(c.mults) + "}";
+}
+
+/// The decoded input of the current execution, one entry per named value: printed with a
+/// finding (copies, formatted only then), or at once with FAIRSPLINES_FUZZ_PRINT=1 in the
+/// environment (to see the input of a crash that a sanitizer reports).
+class Notes {
+public:
+  void clear() { items_.clear(); }
+  template <class T>
+  void add(const char* name, T value) {
+    items_.emplace_back(name, [v = std::move(value)] { return format(v); });
+    if (printAtOnce_) std::fprintf(stderr, "  %s = %s\n", name, items_.back().second().c_str());
+  }
+  void print() const {
+    std::fprintf(stderr, "==== decoded input:\n");
+    for (const auto& [name, text] : items_) std::fprintf(stderr, "  %s = %s\n", name, text().c_str());
+  }
+
+private:
+  std::vector<std::pair<const char*, std::function<std::string()>>> items_;
+  bool printAtOnce_ = std::getenv("FAIRSPLINES_FUZZ_PRINT") != nullptr;
+};
+
+inline Notes& notes() {
+  static Notes n;
+  return n;
+}
+
+/// Records a decoded value for the report of a finding.
+template <class T>
+void note(const char* name, const T& value) {
+  notes().add(name, value);
+}
+
+/// Prints the finding and the decoded input and aborts (libFuzzer reports the abort with a
+/// stack trace and saves the input).
+[[noreturn]] inline void fail(const std::string& call, const std::string& what) {
+  std::fprintf(stderr, "\n==== FairSplines fuzz finding in %s: %s\n", call.c_str(), what.c_str());
+  notes().print();
+  std::fflush(stderr);
+  std::abort();
+}
+
+/// Runs one kernel call under the contract: an InputError with a message is the kernel
+/// refusing the input (fine); any other exception escaping is a finding. Returns whether
+/// the call returned (so the caller checks the result).
+template <class F>
+bool guarded(const char* call, F&& f) {
+  try {
+    f();
+    return true;
+  } catch (const InputError& e) {
+    if (e.what()[0] == '\0') fail(call, "InputError without a message");
+    return false;
+  } catch (const Standard_Failure& e) {
+    fail(call, std::string("OpenCASCADE's ") + e.DynamicType()->Name() + " escaped: " + e.GetMessageString());
+  } catch (const std::exception& e) {
+    fail(call, std::string("an exception other than InputError escaped: ") + typeid(e).name() + ": " + e.what());
+  } catch (...) {
+    fail(call, "an exception of unknown type escaped");
+  }
+}
+
+template <class Derived>
+void requireFinite(const char* call, const char* what, const Eigen::DenseBase<Derived>& m) {
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      if (!std::isfinite(m(i, j))) {
+        fail(call, std::string("non-finite ") + what + " (" + std::to_string(m(i, j)) + " at row " + std::to_string(i) +
+                       ", column " + std::to_string(j) + " of " + std::to_string(m.rows()) + " x " +
+                       std::to_string(m.cols()) + ")");
+      }
+    }
+  }
+}
+
+inline void requireFinite(const char* call, const char* what, double x) {
+  if (!std::isfinite(x)) fail(call, std::string("non-finite ") + what + " (" + std::to_string(x) + ")");
+}
+
+/// A returned B-spline: finite poles, weights and knots, and OCCT accepts it (a curve the
+/// kernel returns must convert: the workbench hands every one to FreeCAD).
+inline void requireValid(const char* call, const BSplineCurve& c) {
+  requireFinite(call, "pole", c.poles);
+  requireFinite(call, "weight", c.weights);
+  requireFinite(call, "knot", c.knots);
+  try {
+    toOcct(c);
+  } catch (const InputError& e) {
+    fail(call, std::string("the returned B-spline is not valid for OpenCASCADE: ") + e.what());
+  } catch (const Standard_Failure& e) {
+    fail(call, std::string("the returned B-spline is not valid for OpenCASCADE: ") + e.GetMessageString());
+  }
+}
+
+inline void requireValid(const char* call, const Handle(Geom_BSplineCurve)& c) {
+  if (c.IsNull()) fail(call, "a null curve");
+  for (int i = 1; i <= c->NbPoles(); ++i) {
+    const gp_Pnt p = c->Pole(i);
+    if (!std::isfinite(p.X()) || !std::isfinite(p.Y()) || !std::isfinite(p.Z())) fail(call, "non-finite pole");
+    if (!std::isfinite(c->Weight(i))) fail(call, "non-finite weight");
+  }
+  for (int i = 1; i <= c->NbKnots(); ++i) {
+    if (!std::isfinite(c->Knot(i))) fail(call, "non-finite knot");
+  }
+}
+
+inline void requireValid(const char* call, const Handle(Geom_BSplineSurface)& s) {
+  if (s.IsNull()) fail(call, "a null surface");
+  for (int i = 1; i <= s->NbUPoles(); ++i) {
+    for (int j = 1; j <= s->NbVPoles(); ++j) {
+      const gp_Pnt p = s->Pole(i, j);
+      if (!std::isfinite(p.X()) || !std::isfinite(p.Y()) || !std::isfinite(p.Z())) fail(call, "non-finite pole");
+      if (!std::isfinite(s->Weight(i, j))) fail(call, "non-finite weight");
+    }
+  }
+  for (int i = 1; i <= s->NbUKnots(); ++i) {
+    if (!std::isfinite(s->UKnot(i))) fail(call, "non-finite u knot");
+  }
+  for (int i = 1; i <= s->NbVKnots(); ++i) {
+    if (!std::isfinite(s->VKnot(i))) fail(call, "non-finite v knot");
+  }
+}
+
+}  // namespace fairsplines::fuzz
