@@ -38,7 +38,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       case 1: {  // near it
         const double u = in.unit();
         if (!guarded(call, [&] { q = curve->value(std::clamp(u, 0.0, 1.0)); })) continue;
-        if (in.flag()) q += in.vector3() * (in.flag() ? 1e-10 : 1e-3);
+        if (in.flag()) {
+          const double scale = in.flag() ? 1e-10 : 1e-3;
+          q += in.vector3() * scale;
+        }
         break;
       }
       default:

@@ -68,7 +68,8 @@ void circles(FuzzInput& in) {
     PointMatrix pieces = circle.cubic;
     if (in.flag() && pieces.rows() > 0) {  // an edited control point (Fig. 4a)
       const Eigen::Index row = in.count(0, 255) % pieces.rows();
-      pieces.row(row) += Eigen::RowVector3d(in.number(), in.number(), 0.0) * pieces(row, 2);
+      const Eigen::Vector2d move = in.vector2();
+      pieces.row(row) += Eigen::RowVector3d(move.x(), move.y(), 0.0) * pieces(row, 2);
       note("edited row", static_cast<int>(row));
       note("edited pieces", pieces);
     }

@@ -65,8 +65,9 @@ void placeInSpace(FuzzInput& in, BSplineCurve& c) {
   PointMatrix p = PointMatrix::Zero(c.poles.rows(), 3);
   p.leftCols(2) = c.poles;
   if (how == 2) {
-    const Eigen::Matrix3d rotation =
-        Eigen::Matrix3d(Eigen::AngleAxisd(in.number(), Eigen::Vector3d(in.number(), in.number(), in.number()).normalized()));
+    const double angle = in.number();
+    const Eigen::Vector3d axis = in.vector3().normalized();
+    const Eigen::Matrix3d rotation = Eigen::Matrix3d(Eigen::AngleAxisd(angle, axis));
     if (rotation.allFinite()) p = (p * rotation.transpose()).eval();
   } else if (how == 3) {
     for (Eigen::Index i = 0; i < p.rows(); ++i) p(i, 2) = in.byte() < 200 ? 0.0 : in.number();

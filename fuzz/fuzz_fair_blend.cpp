@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   BlendEnds ends;
   const bool inPlane = in.byte() < 224;
   if (inPlane) {
-    ends.p0 = Eigen::Vector3d(in.number(), in.number(), 0.0);
+    ends.p0 = in.planar3();
     ends.p1 = ends.p0 + planar(in, in.positive());
     ends.t0 = planar(in, in.byte() < 128 ? 1.0 : in.positive());
     ends.t1 = planar(in, in.byte() < 128 ? 1.0 : in.positive());

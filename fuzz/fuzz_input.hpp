@@ -65,9 +65,11 @@ public:
         std::memcpy(&x, &bits, sizeof x);
         break;
       }
-      case 6:
-        x = static_cast<int16_t>(u16()) / 4096.0 * std::pow(10.0, static_cast<int>(u16() % 629) - 320);
+      case 6: {
+        const double mantissa = static_cast<int16_t>(u16()) / 4096.0;
+        x = mantissa * std::pow(10.0, static_cast<int>(u16() % 629) - 320);
         break;
+      }
       default: {
         const uint8_t how = byte();
         if (how & 1) {
@@ -114,8 +116,20 @@ public:
     return v;
   }
 
-  Eigen::Vector3d vector3() { return Eigen::Vector3d(number(), number(), number()); }
-  Eigen::Vector2d vector2() { return Eigen::Vector2d(number(), number()); }
+  // (Reads in sequence: the order of a constructor's arguments is unspecified.)
+  Eigen::Vector3d vector3() {
+    const double x = number(), y = number(), z = number();
+    return Eigen::Vector3d(x, y, z);
+  }
+  Eigen::Vector2d vector2() {
+    const double x = number(), y = number();
+    return Eigen::Vector2d(x, y);
+  }
+  /// A point in the plane z = 0.
+  Eigen::Vector3d planar3() {
+    const Eigen::Vector2d p = vector2();
+    return Eigen::Vector3d(p.x(), p.y(), 0.0);
+  }
 
   static double special(uint8_t k) {
     constexpr double inf = std::numeric_limits<double>::infinity();

@@ -21,7 +21,7 @@ Eigen::Vector3d direction(FuzzInput& in) {
 }
 
 Eigen::Vector3d point(FuzzInput& in) {
-  if (in.byte() < 200) return Eigen::Vector3d(in.number(), in.number(), 0.0);
+  if (in.byte() < 200) return in.planar3();
   return in.vector3();
 }
 

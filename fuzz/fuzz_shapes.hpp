@@ -18,8 +18,9 @@ inline ShapeFrame shapeFrame(FuzzInput& in) {
   if (in.byte() < 64) f.origin = in.vector3();
   if (in.byte() < 224) {
     if (in.byte() < 128) {
-      const Eigen::Vector3d axis(in.number(), in.number(), in.number());
-      const Eigen::Matrix3d rotation = Eigen::Matrix3d(Eigen::AngleAxisd(in.number(), axis.normalized()));
+      const Eigen::Vector3d axis = in.vector3().normalized();
+      const double angle = in.number();
+      const Eigen::Matrix3d rotation = Eigen::Matrix3d(Eigen::AngleAxisd(angle, axis));
       if (rotation.allFinite()) {
         f.x = rotation.col(0);
         f.y = rotation.col(1);
