@@ -6,9 +6,7 @@
 using namespace fairsplines;
 using namespace fairsplines::fuzz;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   std::string kind;
   std::unique_ptr<BasicCurve> curve;
   if (!guarded("a basic curve's constructor", [&] { curve = basicCurve(in, kind); })) return 0;
@@ -56,3 +54,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

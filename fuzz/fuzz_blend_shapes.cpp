@@ -176,9 +176,7 @@ void g1(FuzzInput& in) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   switch (in.choice(3)) {
     case 0:
       circles(in);
@@ -192,3 +190,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

@@ -25,9 +25,7 @@ G2Surface g2SurfaceOf(const ShapeOfRevolution& s) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   const int which = in.choice(9);
   const ShapeOfRevolution a = shapeOfRevolution(in, 10);
   noteShape("shape", a);
@@ -150,3 +148,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

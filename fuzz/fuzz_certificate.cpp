@@ -77,9 +77,7 @@ void placeInSpace(FuzzInput& in, BSplineCurve& c) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   BSplineCurve curve;
   if (in.byte() < 224) {
     curve = wellFormed(in);
@@ -129,3 +127,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

@@ -3,10 +3,13 @@
 // every number is finite. Anything else is a finding: the harness prints what broke and
 // aborts, and libFuzzer saves the input (crash-<sha1>) with the stack trace.
 #pragma once
+#include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <typeinfo>
@@ -89,9 +92,55 @@ void note(const char* name, const T& value) {
   notes().add(name, value);
 }
 
+// --- Findings ---------------------------------------------------------------------------
+
+/// Thrown by fail() with FAIRSPLINES_FUZZ_KEEP_GOING=1: the harness goes on with the next input.
+struct KeptGoing {};
+
+/// FAIRSPLINES_FUZZ_KEEP_GOING=1 in the environment: a finding of the contract (not a
+/// sanitizer's, which still aborts) is reported the first time its kind is seen and
+/// counted, and fuzzing goes on; the counts are printed at exit. For surveying all the
+/// kinds of findings in one long run; `make fuzz` does not set it.
+inline bool keepGoing() {
+  static const bool on = std::getenv("FAIRSPLINES_FUZZ_KEEP_GOING") != nullptr;
+  return on;
+}
+
+/// The kind of a finding: its call and message without the numbers of the input.
+inline std::string kindOf(const std::string& call, const std::string& what) {
+  std::string kind = call + ": " + what.substr(0, what.find(" ("));
+  std::string out;
+  for (char c : kind) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) out += c;
+  }
+  return out;
+}
+
+inline std::map<std::string, long>& kinds() {
+  static std::map<std::string, long>* counts = [] {
+    auto* m = new std::map<std::string, long>;
+    std::atexit([] {
+      if (kinds().empty()) return;
+      std::fprintf(stderr, "==== FairSplines fuzz findings by kind (kept going):\n");
+      for (const auto& [kind, n] : kinds()) std::fprintf(stderr, "  %8ld  %s\n", n, kind.c_str());
+    });
+    return m;
+  }();
+  return *counts;
+}
+
 /// Prints the finding and the decoded input and aborts (libFuzzer reports the abort with a
-/// stack trace and saves the input).
+/// stack trace and saves the input); with keepGoing(), reports only the first of each kind
+/// and throws KeptGoing.
 [[noreturn]] inline void fail(const std::string& call, const std::string& what) {
+  if (keepGoing()) {
+    if (kinds()[kindOf(call, what)]++ == 0) {
+      std::fprintf(stderr, "\n==== FairSplines fuzz finding in %s: %s (first of its kind; going on)\n", call.c_str(),
+                   what.c_str());
+      notes().print();
+    }
+    throw KeptGoing{};
+  }
   std::fprintf(stderr, "\n==== FairSplines fuzz finding in %s: %s\n", call.c_str(), what.c_str());
   notes().print();
   std::fflush(stderr);
@@ -106,6 +155,8 @@ bool guarded(const char* call, F&& f) {
   try {
     f();
     return true;
+  } catch (const KeptGoing&) {
+    throw;
   } catch (const InputError& e) {
     if (e.what()[0] == '\0') fail(call, "InputError without a message");
     return false;
@@ -177,6 +228,19 @@ inline void requireValid(const char* call, const Handle(Geom_BSplineSurface)& s)
   for (int i = 1; i <= s->NbVKnots(); ++i) {
     if (!std::isfinite(s->VKnot(i))) fail(call, "non-finite v knot");
   }
+}
+
+/// One execution of a harness: the decoded input starts empty, `fuzzOne` reads the bytes
+/// and calls the kernel. Every harness's LLVMFuzzerTestOneInput is this.
+template <class FuzzInputT>
+int runOne(const uint8_t* data, size_t size, int (*fuzzOne)(FuzzInputT&)) {
+  FuzzInputT in(data, size);
+  notes().clear();
+  try {
+    fuzzOne(in);
+  } catch (const KeptGoing&) {
+  }
+  return 0;
 }
 
 }  // namespace fairsplines::fuzz

@@ -12,8 +12,7 @@
 using namespace fairsplines;
 using namespace fairsplines::fuzz;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
+int fuzzOne(FuzzInput& in) {
   const PointMatrix q = samplePoints(in, 64);
   CsrOptions options;
   options.closed = in.flag();
@@ -34,7 +33,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     default:  // from the parametrization
       break;
   }
-  notes().clear();
   note("points", q);
   note("closed", options.closed);
   note("parametrization", static_cast<int>(options.parametrization));
@@ -92,3 +90,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

@@ -38,9 +38,7 @@ void requireFinitePolygon(const char* call, const PiecePolygon& p) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   const int pieces = in.count(1, 4);
   std::vector<std::unique_ptr<BasicCurve>> curves;
   std::vector<PiecePolygon> polygons;
@@ -88,3 +86,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

@@ -17,9 +17,7 @@ Eigen::Vector3d planar(FuzzInput& in, double length) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   BlendEnds ends;
   const bool inPlane = in.byte() < 224;
   if (inPlane) {
@@ -81,3 +79,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (blend.monotone != blend.certificate.monotone) fail(call, "monotone differs from the certificate's");
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

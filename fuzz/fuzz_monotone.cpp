@@ -35,9 +35,7 @@ void requireSegments(const char* call, const BSplineCurve& cubic) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
-  notes().clear();
+int fuzzOne(FuzzInput& in) {
   if (in.byte() < 192) {  // Algorithm 2
     const Eigen::Vector3d p0 = point(in), t0 = direction(in);
     Eigen::Vector3d p1 = point(in);
@@ -96,3 +94,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

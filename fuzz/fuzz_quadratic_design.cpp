@@ -7,13 +7,11 @@
 using namespace fairsplines;
 using namespace fairsplines::fuzz;
 
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  FuzzInput in(data, size);
+int fuzzOne(FuzzInput& in) {
   const PointMatrix q = samplePoints(in, 64);
   const bool closed = in.flag();
   const auto parametrization = static_cast<Parametrization>(in.choice(3));
   const double epsilon = in.flag() ? in.number() : 1e-9;
-  notes().clear();
   note("points", q);
   note("closed", closed);
   note("parametrization", static_cast<int>(parametrization));
@@ -25,3 +23,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   return 0;
 }
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { return runOne(data, size, fuzzOne); }

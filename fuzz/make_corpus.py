@@ -254,8 +254,9 @@ seed("fuzz_monotone", "fairest_quarter_turn", alg2(Enc(), (0, 0), 0.0, (2, 1), 1
 seed("fuzz_monotone", "grid_quarter_turn", alg2(Enc(), (0, 0), 0.0, (2, 1), 1.0, grid=True, step=0))
 seed("fuzz_monotone", "reversed_ends", alg2(Enc(), (0, 0), 0.0, (1, 2), 1.25))
 seed("fuzz_monotone", "straight", alg2(Enc(), (0, 0), 0.0, (3, 0), 0.0))
-seed("fuzz_monotone", "edge_huge_points",  # issue 13: (1.7e308, 0) twice
-     alg2(Enc(), (1.7e308, 0), 0.0, (1.7e308, 0), 0.0))
+seed("fuzz_monotone", "edge_huge_points", alg2(Enc(), (1.7e308, 0), 0.0, (1.7e308, 1), 0.5))
+seed("fuzz_monotone", "edge_algorithm1_huge_differences",  # issue 13: (1, 0), [(1.7e308, 0), (1.7e308, 0)]
+     Enc().byte(255).numbers([1.0, 0.0]).count(2, 0).numbers([1.7e308, 0, 1.7e308, 0]).choice(2).byte(0))
 seed("fuzz_monotone", "algorithm1_uniform",
      Enc().byte(255).numbers([1.0, 0.0]).count(3, 0).numbers([-0.25, 0.5, -0.25, 0.25, -0.25, 0.125])
      .choice(2).byte(0))
