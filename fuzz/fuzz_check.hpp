@@ -129,14 +129,31 @@ inline std::map<std::string, long>& kinds() {
   return *counts;
 }
 
+/// The bytes of the current execution (set by runOne), saved with the first finding of a
+/// kind in keep-going mode.
+inline std::pair<const uint8_t*, size_t>& currentInput() {
+  static std::pair<const uint8_t*, size_t> input{nullptr, 0};
+  return input;
+}
+
 /// Prints the finding and the decoded input and aborts (libFuzzer reports the abort with a
-/// stack trace and saves the input); with keepGoing(), reports only the first of each kind
-/// and throws KeptGoing.
+/// stack trace and saves the input); with keepGoing(), reports only the first of each kind,
+/// saves its input as finding-<hash of the kind> in FAIRSPLINES_FUZZ_FINDINGS (a folder,
+/// default the current one) and throws KeptGoing.
 [[noreturn]] inline void fail(const std::string& call, const std::string& what) {
   if (keepGoing()) {
-    if (kinds()[kindOf(call, what)]++ == 0) {
-      std::fprintf(stderr, "\n==== FairSplines fuzz finding in %s: %s (first of its kind; going on)\n", call.c_str(),
-                   what.c_str());
+    const std::string kind = kindOf(call, what);
+    if (kinds()[kind]++ == 0) {
+      const char* folder = std::getenv("FAIRSPLINES_FUZZ_FINDINGS");
+      char name[32];
+      std::snprintf(name, sizeof name, "finding-%016zx", std::hash<std::string>{}(kind));
+      const std::string path = std::string(folder ? folder : ".") + "/" + name;
+      if (FILE* f = std::fopen(path.c_str(), "wb")) {
+        std::fwrite(currentInput().first, 1, currentInput().second, f);
+        std::fclose(f);
+      }
+      std::fprintf(stderr, "\n==== FairSplines fuzz finding in %s: %s (first of its kind, input %s; going on)\n",
+                   call.c_str(), what.c_str(), path.c_str());
       notes().print();
     }
     throw KeptGoing{};
@@ -236,6 +253,7 @@ template <class FuzzInputT>
 int runOne(const uint8_t* data, size_t size, int (*fuzzOne)(FuzzInputT&)) {
   FuzzInputT in(data, size);
   notes().clear();
+  currentInput() = {data, size};
   try {
     fuzzOne(in);
   } catch (const KeptGoing&) {
