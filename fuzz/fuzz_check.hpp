@@ -106,12 +106,17 @@ inline bool keepGoing() {
   return on;
 }
 
-/// The kind of a finding: its call and message without the numbers of the input.
+/// The kind of a finding: its call and message without the numbers of the input (digits
+/// that do not continue a name, as in "Array1" or "t_4").
 inline std::string kindOf(const std::string& call, const std::string& what) {
-  std::string kind = call + ": " + what.substr(0, what.find(" ("));
+  const std::string kind = call + ": " + what.substr(0, what.find(" ("));
   std::string out;
+  bool inName = false;
   for (char c : kind) {
-    if (!std::isdigit(static_cast<unsigned char>(c))) out += c;
+    const bool letter = std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+    if (std::isdigit(static_cast<unsigned char>(c)) && !inName) continue;
+    if (!std::isdigit(static_cast<unsigned char>(c))) inName = letter;
+    out += c;
   }
   return out;
 }
