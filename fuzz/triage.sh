@@ -14,6 +14,9 @@ for input in "$@"; do
     sig=$(sed -E 's/ \(.*$//; s/: [^:]*escaped: .*/&/' <<<"$line" | sed -E 's/[-+]?[0-9][0-9.e+-]*//g')
   elif line=$(grep -m1 "runtime error:" <<<"$out"); then
     sig="UBSan $(sed -E 's/^.*\/(cpp|fuzz|usr\/include)\//\1\//; s/runtime error: //' <<<"$line" | sed -E "s/ of type .*//; s/'[^']*'//g")"
+  elif line=$(grep -m1 -o "Assertion .* failed" <<<"$out"); then
+    frame=$(grep -m1 -oE "/cpp/kernel/src/[a-z_0-9]+\.cpp:[0-9]+" <<<"$out")
+    sig="assertion ${line:0:80}... at ${frame#/}"
   elif line=$(grep -m1 -o "ERROR: AddressSanitizer: [a-z-]*" <<<"$out"); then
     frame=$(grep -m1 -oE "/cpp/kernel/src/[a-z_0-9]+\.cpp:[0-9]+" <<<"$out")
     sig="ASan ${line#ERROR: AddressSanitizer: } at ${frame#/}"
@@ -22,7 +25,7 @@ for input in "$@"; do
   elif grep -q "out-of-memory" <<<"$out"; then
     sig="out of memory"
   elif grep -q "deadly signal\|ERROR:" <<<"$out"; then
-    sig="other: $(grep -m1 "ERROR:" <<<"$out")"
+    sig="other: $(grep -m1 "ERROR:" <<<"$out" | sed -E 's/==[0-9]+==//')"
   else
     sig="no longer reproduces"
   fi
