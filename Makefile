@@ -8,11 +8,23 @@ FREECADCMD ?= freecadcmd
 XVFB     := xvfb-run -a -s "-screen 0 1280x1024x24"
 export QTWEBENGINE_DISABLE_SANDBOX=1
 
-.PHONY: deps build install demo test test-cpp test-python run bench clean \
-        test-freecad-1.0 test-freecad-1.1 test-matrix translations
+# Sanitized builds with clang (fuzz/README.md): `make fuzz` runs every libFuzzer harness of
+# fuzz/ for FUZZ_SECONDS each; `make test-sanitize` runs the C++ tests under ASan + UBSan.
+FUZZ_BUILD   ?= build-fuzz
+ASAN_BUILD   ?= build-asan
+FUZZ_SECONDS ?= 30
+FUZZ_TIMEOUT ?= 5
+SANITIZED_CMAKE = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+                  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g"
+
+.PHONY: deps deps-sanitizers build install demo test test-cpp test-python run bench clean \
+        test-freecad-1.0 test-freecad-1.1 test-matrix translations fuzz test-sanitize
 
 deps:
 	@bash tools/install-deps.sh
+
+deps-sanitizers:
+	@bash tools/install-deps.sh sanitizers
 
 build: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DPython_EXECUTABLE=$(PYTHON) >/dev/null
@@ -60,6 +72,21 @@ bench: build
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py
+
+# The kernel instrumented for libFuzzer (-fsanitize=address,undefined,fuzzer-no-link) and
+# the harnesses; each runs FUZZ_SECONDS from its seed corpus fuzz/corpus/<harness>/.
+# Findings land in $(FUZZ_BUILD)/findings/; the target fails if there is one.
+fuzz: deps-sanitizers
+	cmake -S . -B $(FUZZ_BUILD) $(SANITIZED_CMAKE) -DFAIRSPLINES_FUZZ=ON >/dev/null
+	cmake --build $(FUZZ_BUILD) -j $(JOBS)
+	bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TIMEOUT)
+
+# The GoogleTest suite built with -fsanitize=address,undefined (UBSan does not recover).
+test-sanitize: deps-sanitizers
+	cmake -S . -B $(ASAN_BUILD) $(SANITIZED_CMAKE) -DFAIRSPLINES_SANITIZE=ON >/dev/null
+	cmake --build $(ASAN_BUILD) -j $(JOBS)
+	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+	  ctest --output-on-failure
 
 clean:
 	rm -rf $(BUILD) $(OUT) freecad_workbench/_kernel*.so

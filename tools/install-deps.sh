@@ -9,6 +9,12 @@ packages=(
   python3-dev python3-numpy python3-pytest python3-hypothesis python3-matplotlib python3-pil
   xvfb xauth
 )
+# `install-deps.sh sanitizers` (make fuzz, make test-sanitize): also clang with its
+# sanitizer and libFuzzer runtimes, and llvm for llvm-symbolizer (stack traces).
+sanitizer_packages=(clang libclang-rt-dev llvm)
+if [ "${1:-}" = sanitizers ]; then
+  packages+=("${sanitizer_packages[@]}")
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
