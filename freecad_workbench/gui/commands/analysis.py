@@ -12,7 +12,7 @@ import FreeCADGui
 from ... import monotone
 from ...errors import InputError
 from .. import comb, plot
-from .common import QT_TRANSLATE_NOOP, edge_links, links_code, resources, selected_links
+from .common import QT_TRANSLATE_NOOP, edge_links, links_code, resources, run_on_selected_edges, selected_links
 
 GROUP = "FairSplines_AnalysisGroup"
 COMMANDS = ("FairSplines_CurvatureComb", "FairSplines_CurvaturePlot", "FairSplines_CheckMonotone")
@@ -81,12 +81,7 @@ class CurvaturePlotCommand:
         return bool(edge_links(selected_links()))
 
     def Activated(self):
-        links = edge_links(selected_links())
-        if not links:
-            return
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("import freecad_workbench.gui.plot")
-        FreeCADGui.doCommand(f"freecad_workbench.gui.plot.plot_links({links_code(links)})")
+        run_on_selected_edges("freecad_workbench.gui.plot", "plot_links")
 
 
 def check_links(links, path=None):
@@ -140,12 +135,7 @@ class CheckMonotoneCommand:
         return bool(edge_links(selected_links()))
 
     def Activated(self):
-        links = edge_links(selected_links())
-        if not links:
-            return
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("import freecad_workbench.gui.commands.analysis")
-        FreeCADGui.doCommand(f"freecad_workbench.gui.commands.analysis.check_links({links_code(links)})")
+        run_on_selected_edges("freecad_workbench.gui.commands.analysis", "check_links")
 
 
 class AnalysisGroup:

@@ -82,6 +82,16 @@ def links_code(links):
     return "[" + ", ".join(link_code(obj, sub) for obj, sub in links) + "]"
 
 
+def run_on_selected_edges(module, function):
+    """Call module.function(links) on the selected edges, recorded as a macro line."""
+    links = edge_links(selected_links())
+    if not links:
+        return
+    FreeCADGui.doCommand("import FreeCAD")
+    FreeCADGui.doCommand(f"import {module}")
+    FreeCADGui.doCommand(f"{module}.{function}({links_code(links)})")
+
+
 def doc_code(doc):
     return f"FreeCAD.getDocument({doc.Name!r})"
 

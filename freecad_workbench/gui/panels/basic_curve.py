@@ -161,13 +161,6 @@ class BasicCurvePanel(LiveEditPanel):
 
     # --- edits -----------------------------------------------------------------------
 
-    def _apply(self, changes):
-        self.session.begin()
-        for name, value in changes:
-            setattr(self.obj, name, value)
-        self.doc.recompute()
-        self.refresh()
-
     def set_dimension(self, name, value):
         """Set one dimension (float, Vector or list) and recompute."""
         if not self._updating:

@@ -217,13 +217,6 @@ class BlendShapePanel(LiveEditPanel):
 
     # --- edits -----------------------------------------------------------------------
 
-    def _apply(self, changes):
-        self.session.begin()
-        for name, value in changes:
-            setattr(self.obj, name, value)
-        self.doc.recompute()
-        self.refresh()
-
     def set_dimension(self, name, value):
         """Set one dimension (a length, a count, a list) and recompute."""
         if not self._updating:

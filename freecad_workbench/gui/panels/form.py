@@ -177,6 +177,14 @@ class LiveEditPanel:
         spin.setKeyboardTracking(False)
         return compact(spin)
 
+    def _apply(self, changes):
+        """Set [(property, value)] on self.obj inside the panel's undo step, recompute, refresh."""
+        self.session.begin()
+        for name, value in changes:
+            setattr(self.obj, name, value)
+        self.doc.recompute()
+        self.refresh()
+
     def getStandardButtons(self):
         from ..qt import QtWidgets
 

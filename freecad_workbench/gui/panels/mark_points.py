@@ -44,7 +44,7 @@ class MarkPointsPanel(LiveEditPanel):
     """Task panel: sliders for the marks of a Design spline, with live preview."""
 
     def __init__(self, obj):
-        from ..qt import QtCore, QtGui, QtWidgets
+        from ..qt import QtGui, QtWidgets
 
         self.obj = obj
         self.doc = obj.Document
