@@ -133,28 +133,40 @@ double ClothoidSpline::variation() const {
 // ---------------------------------------------------------------------------------------
 // The G2 problem.
 
-namespace {
-
-/// Vogt's theorem: on a convex arc (one side of its chord, turning less than pi) whose
-/// curvature grows from A to B, the tangent meets the chord at B at a larger angle than at A.
-/// In the chord frame the arc turning to side s (+1 left, -1 right) has alpha = -s theta0 at
-/// p0 and beta = s theta1 at p1; "" when the theorem does not apply or holds.
-std::string vogtReason(double theta0, double k0, double theta1, double k1) {
-  const double s = (k0 + k1) > 0.0 ? 1.0 : -1.0;
-  const double alpha = -s * theta0, beta = s * theta1;
-  if (!(alpha > 0.0 && beta > 0.0 && alpha + beta < kPi)) return "";
+/// The turning rule for curvature of one sign (C-shaped ends; one end may be straight), over
+/// arcs that turn less than a full turn. Vogt's theorem: on a convex arc (one side of its
+/// chord, turning less than pi) whose curvature grows from one end to the other, the tangent
+/// meets the chord at a larger angle at the end of larger curvature. The same holds, as
+/// |theta_strong| > |theta_weak| with the principal angles to the chord, for every arc of
+/// monotone curvature of one sign that turns less than 2 pi: docs/FAIR_BLENDS.md section 5,
+/// from docs/research/G2_FEASIBILITY.md (the extension past Vogt's convex case is checked
+/// numerically there and by the kernel tests, not proved). Where it fails, the one turning the
+/// data allows within the window is infeasible, and the least turning left is one full turn
+/// more. "" when the rule holds.
+static std::string turningRuleReason(double theta0, double k0, double theta1, double k1) {
   const bool growsToEnd = std::abs(k1) > std::abs(k0);
-  if (growsToEnd ? beta > alpha : alpha > beta) return "";
+  const double strong = std::abs(growsToEnd ? theta1 : theta0), weak = std::abs(growsToEnd ? theta0 : theta1);
+  if (strong > weak) return "";
+  // The turning of the curvature's sign s that the tangents allow within one turn, then one
+  // turn more.
+  const double s = (k0 + k1) > 0.0 ? 1.0 : -1.0, delta = normalizeAngle(theta1 - theta0);
+  const double within = delta * s > 0.0 ? delta : delta + 2.0 * kPi * s;
   const double degrees = 180.0 / kPi;
+  const bool convex = -s * theta0 > 0.0 && s * theta1 > 0.0 && std::abs(within) < kPi;
   return std::string("the curvature grows towards the ") + (growsToEnd ? "end" : "start") +
-         ", so the tangent must meet the chord at a larger angle there (Vogt's theorem), but it meets it at " +
-         num((growsToEnd ? beta : alpha) * degrees) + " degrees there and " + num((growsToEnd ? alpha : beta) * degrees) +
-         " at the other end";
+         ", so the tangent must meet the chord at a larger angle there" +
+         (convex ? " (Vogt's theorem)" : " (Vogt's theorem, extended to arcs of up to a full turn)") +
+         ", but it meets it at " + num(strong * degrees) + " degrees there and " + num(weak * degrees) +
+         " at the other end: a curve whose curvature runs one way between these ends turns at least " +
+         num(std::abs(within + 2.0 * kPi * s) * degrees) + " degrees, more than a full turn";
 }
 
-/// Necessary conditions of monotone curvature from the Tait-Kneser and Vogt theorems; ""
-/// when they hold.
-std::string kneserReason(double theta0, double k0, double theta1, double k1) {
+/// The circle tests: the osculating circles at the ends of a curve whose curvature runs one
+/// way are nested without inflection, disjoint across one inflection, and clear of a
+/// straight end's tangent line (Tait-Kneser). With the research note's invariant
+/// Q = (K0/2 + sin theta0)(K1/2 - sin theta1) + sin^2((theta0 + theta1)/2) (chord units)
+/// they fail exactly where Q >= 0; proved for every turning. "" when they hold.
+static std::string circleReason(double theta0, double k0, double theta1, double k1) {
   const Eigen::Vector2d p0(0.0, 0.0), p1(1.0, 0.0);
   const Eigen::Vector2d n0(-std::sin(theta0), std::cos(theta0)), n1(-std::sin(theta1), std::cos(theta1));
   const bool inflection = (k0 < 0.0 && k1 > 0.0) || (k0 > 0.0 && k1 < 0.0);
@@ -171,7 +183,7 @@ std::string kneserReason(double theta0, double k0, double theta1, double k1) {
              num(d) + " apart) overlap: a curve whose curvature runs one way through one inflection has them on the "
              "two sides of its inflection tangent";
     }
-    return inflection ? "" : vogtReason(theta0, k0, theta1, k1);
+    return "";
   }
   if (k0 == 0.0 && k1 == 0.0) return "";  // handled as equal curvatures
   // One end straight: the other end's osculating circle lies on the side the curve turns to,
@@ -188,8 +200,16 @@ std::string kneserReason(double theta0, double k0, double theta1, double k1) {
            ": a curve whose curvature runs one way from 0 keeps its osculating circles on one side of that line "
            "(Tait-Kneser)";
   }
-  return vogtReason(theta0, k0, theta1, k1);
+  return "";
 }
+
+std::string g2Refusal(double theta0, double k0, double theta1, double k1) {
+  std::string why = circleReason(theta0, k0, theta1, k1);
+  if (why.empty() && k0 * k1 >= 0.0) why = turningRuleReason(theta0, k0, theta1, k1);
+  return why;
+}
+
+namespace {
 
 struct Candidate {
   Spiral spiral;
@@ -247,8 +267,9 @@ Candidate newton(Spiral s, double Theta) {
 /// softmax of (0, z): monotone by construction. Residuals: the end point, the turning, and
 /// sqrt(mu) (n step_i - 1), which pulls towards the clothoid (equal steps); mu goes to 1e-12
 /// so that the ends are met to rounding. nullopt where it does not reach the ends.
-std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n) {
+std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n, int profile) {
   const int m = n;  // parameters
+  constexpr double kFloor = 1.25 * kMinSlope;  // every step at least kFloor / n: n step >= kFloor
   auto build = [&](const Eigen::VectorXd& x) {
     ClothoidSpline c;
     c.theta0 = theta0, c.k0 = k0, c.k1 = k1, c.length = 1.0 + std::exp(x[0]);
@@ -257,7 +278,7 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
     const double top = std::max(0.0, x.tail(n - 1).maxCoeff());
     w[0] = std::exp(-top);
     for (int i = 1; i < n; ++i) w[i] = std::exp(x[i] - top);
-    w /= w.sum();
+    w = (1.0 - kFloor) * w / w.sum() + Eigen::VectorXd::Constant(n, kFloor / n);
     c.C.assign(n + 1, 0.0);
     for (int i = 0; i < n; ++i) c.C[i + 1] = c.C[i] + w[i];
     c.C[n] = 1.0;
@@ -279,6 +300,11 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
   };
   Eigen::VectorXd x = Eigen::VectorXd::Zero(m);
   x[0] = std::log(std::max(L0 - 1.0, 1e-6));
+  for (int i = 1; i < n; ++i) {
+    if (profile == 1) x[i] = 3.0 * i / (n - 1.0);
+    if (profile == 2) x[i] = -3.0 * i / (n - 1.0);
+    if (profile == 3) x[i] = i == n - 1 ? 0.0 : -3.0;
+  }
   for (double mu : {1e-2, 1e-4, 1e-6}) {
     double lambda = 1e-3;
     Eigen::VectorXd r = residuals(x, mu);
@@ -346,6 +372,10 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   const Clothoid g1 = clothoidG1(Eigen::Vector2d::Zero(), theta0, Eigen::Vector2d(1.0, 0.0), theta1);
   const double g1Turning = g1.theta(g1.length) - g1.theta0;
   std::vector<Candidate> found;
+  bool proven = false;  // a circle test failed: nothing monotone exists
+  // Curvature of one sign turns the tangent that way: other windings cannot be monotone.
+  const bool cShaped = k0 * k1 >= 0.0;
+  auto signAllowed = [&](double Theta) { return !cShaped || Theta * (k0 + k1) > 0.0; };
   // Newton from the length L (a from the turning, b = 0); true when it ends monotone.
   auto tryLength = [&](double Theta, double L) {
     if (!(std::abs(Theta) < 2.0 * kPi)) return false;  // a blend turns less than a full turn
@@ -377,7 +407,8 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
     // The fairest curve with one bump of curvature between them, for the report.
     for (double L : {g1.length, 1.05, 1.3, 2.0}) tryLength(g1Turning, L);
   } else {
-    out.reason = kneserReason(theta0, k0, theta1, k1);
+    proven = !circleReason(theta0, k0, theta1, k1).empty();
+    out.reason = g2Refusal(theta0, k0, theta1, k1);
     // Starts: the length at which a profile of shape a = (k1 - k0) aStart (b = 0) has the
     // turning. First the clothoid (aStart = 0) in every winding, and the G1 clothoid's
     // length; only where none of those is monotone, the other shapes, per winding until one
@@ -403,21 +434,26 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
       out.fallback = s;
     }
   }
-  if (!out.monotone && !equal) {
+  if (!out.monotone && !equal && !proven) {
     // The cubic profiles do not reach these ends monotonically: clothoid splines, which do
     // wherever a piecewise-linear monotone curvature does.
     // Starts: the G1 clothoid's length in its winding, then a nearly straight curve and
     // two longer ones; per winding until one is monotone.
     for (int n : {0, 1, -1}) {
       const double Theta = delta + 2.0 * kPi * n;
-      if (!(std::abs(Theta) < 2.0 * kPi)) continue;
-      std::vector<double> starts{1.02, 1.5, 3.0};
+      if (!(std::abs(Theta) < 2.0 * kPi) || !signAllowed(Theta)) continue;
+      std::vector<double> starts{1.02, 1.5, 3.0, 1.003};
       if (std::abs(g1Turning - Theta) < 1e-9) starts.insert(starts.begin(), g1.length);
-      for (double L0 : starts) {
-        const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, 8);
-        if (!c || c->minSlope() < kMinSlope) continue;
-        if (!out.spline || c->variation() < out.spline->variation()) out.spline = c;
-        break;
+      bool done = false;
+      for (int attempt = 0; attempt < 8 && !done; ++attempt) {
+        const int profile = attempt % 4, pieces = attempt < 4 ? 8 : 16;
+        for (double L0 : starts) {
+          const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, pieces, profile);
+          if (!c || c->minSlope() < kMinSlope) continue;
+          if (!out.spline || c->variation() < out.spline->variation()) out.spline = c;
+          done = true;
+          break;
+        }
       }
     }
   }

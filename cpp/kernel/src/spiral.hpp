@@ -55,13 +55,21 @@ struct SpiralSolution {
 /// needs kappa' away from 0 to be certified.
 constexpr double kMinSlope = 0.02;
 
+/// Why no curve of monotone curvature that turns less than a full turn goes from (0, 0),
+/// angle theta0, curvature k0, to (1, 0), angle theta1, curvature k1 (chord units, angles
+/// principal, k0 != k1), or "" where one exists (docs/FAIR_BLENDS.md section 5):
+/// - the osculating circles at the ends are nested without inflection and disjoint across
+///   one, and clear of a straight end's tangent line (Tait-Kneser; together exactly Q < 0);
+/// - with curvature of one sign, the tangent meets the chord at a larger angle at the end of
+///   larger curvature (Vogt's theorem for convex arcs; past them checked numerically only).
+std::string g2Refusal(double theta0, double k0, double theta1, double k1);
+
 /// Solves the G2 problem from (0, 0), angle theta0, curvature k0, to (1, 0), angle theta1,
 /// curvature k1 (chord units), over the windings of total turning (theta1 - theta0) + 2 pi n
 /// that turn less than a full turn, by Newton on the length and the shape from several starts. First the necessary
 /// conditions of monotone curvature are checked: equal end curvatures need a common circle,
-/// and by the Tait-Kneser theorem the osculating circles at the ends of an arc without
-/// inflection are nested, and those of an arc with one inflection lie on the two sides of
-/// its inflection tangent, so they are disjoint.
+/// and g2Refusal. Its reason is kept only where no monotone curve is found, so a refusal
+/// never hides a solution.
 SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1);
 
 }  // namespace fairsplines::detail
