@@ -266,7 +266,9 @@ Candidate newton(Spiral s, double Theta) {
 /// Levenberg-Marquardt on (log(L - 1), z_1 .. z_{n-1}) (L > 1: longer than the chord) with the node steps C_i - C_{i-1} the
 /// softmax of (0, z): monotone by construction. Residuals: the end point, the turning, and
 /// sqrt(mu) (n step_i - 1), which pulls towards the clothoid (equal steps); mu goes to 1e-12
-/// so that the ends are met to rounding. nullopt where it does not reach the ends.
+/// so that the ends are met to rounding. The start has equal steps (profile 0), steps growing
+/// towards the end (1) or the start (2), or steps at the two ends (3, like a triarc).
+/// nullopt where it does not reach the ends.
 std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n, int profile) {
   const int m = n;  // parameters
   constexpr double kFloor = 1.25 * kMinSlope;  // every step at least kFloor / n: n step >= kFloor
@@ -407,8 +409,9 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
     // The fairest curve with one bump of curvature between them, for the report.
     for (double L : {g1.length, 1.05, 1.3, 2.0}) tryLength(g1Turning, L);
   } else {
-    proven = !circleReason(theta0, k0, theta1, k1).empty();
-    out.reason = g2Refusal(theta0, k0, theta1, k1);
+    out.reason = circleReason(theta0, k0, theta1, k1);
+    proven = !out.reason.empty();
+    if (!proven && cShaped) out.reason = turningRuleReason(theta0, k0, theta1, k1);
     // Starts: the length at which a profile of shape a = (k1 - k0) aStart (b = 0) has the
     // turning. First the clothoid (aStart = 0) in every winding, and the G1 clothoid's
     // length; only where none of those is monotone, the other shapes, per winding until one
