@@ -54,8 +54,38 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Angles (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Angles around the torus&apos; axis, in degrees, where the arcs meet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Angles around the tube, in degrees, where the profile&apos;s arcs meet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/basic_curve.py"/>
         <source>Archimedean spiral</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Arcs around</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Around the axis (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Around the tube (°)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -246,8 +276,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Heights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>How many teeth a comb has on each edge, at least. More show finer detail, fewer redraw faster.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>How much the radius grows per unit of height</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -287,6 +327,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Latitudes (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Length of the teeth. At 1 the longest tooth is at most a quarter of the curve&apos;s size and no tooth reaches its centre of curvature; 2 doubles them. Negative: the comb on the other side of the curve.</source>
         <translation type="unfinished"></translation>
@@ -297,7 +342,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Longitudes (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Major radius</source>
         <translation type="unfinished"></translation>
     </message>
@@ -313,6 +364,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Minor radius</source>
         <translation type="unfinished"></translation>
     </message>
@@ -354,6 +406,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <source>One scale for all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Or join to</source>
         <translation type="unfinished"></translation>
@@ -374,6 +431,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Pieces along the profile (its arcs or segments)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Pieces {} and {}: {}</source>
         <translation type="unfinished"></translation>
@@ -385,7 +447,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
-        <source>Plain join (to compare)</source>
+        <source>Plain join</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -414,8 +476,29 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile pieces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Radius at height 0</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -454,7 +537,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../freecad_workbench/gui/panels/comb.py"/>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Same scale for all combs</source>
         <translation type="unfinished"></translation>
@@ -482,6 +564,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Slide the marks along each basic curve. A conic stays exact from its second to its second-last mark; the joins are rounded off in between.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Slope</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -562,7 +649,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
-        <source>The paper&apos;s naive blend (Fig. 2a): the shape and the ring joined without the transition strip; its seams show</source>
+        <source>To compare: the paper&apos;s naive blend (Fig. 2a), the shape and the ring joined without the transition strip; its seams show</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -336,7 +336,7 @@ TEST(FairBlend, G2RefusalsRefuseNoMonotoneCurveAndAgreeWithTheSolver) {
     }
   }
   EXPECT_GT(pastHalfTurn, 400);
-  EXPECT_GE(solved, 291);  // 97%
+  EXPECT_GE(solved, 298);  // 299 measured: without the weak-pull attempts 296
   EXPECT_GT(cShaped, 1500);
   // Random C-shaped data that pass the circle tests (Q < 0) but fail the turning rule: the
   // solver finds nothing monotone for any of them.

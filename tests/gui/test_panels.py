@@ -165,3 +165,19 @@ def test_comb_panel_fits(active, artifacts):
     assert_fits(panel, "Curvature comb panel")
     picture(panel, "comb", artifacts)
     panel.form.deleteLater()
+
+
+def test_panels_ask_for_ok_and_cancel_as_freecad_takes_them(active):
+    """FreeCAD reads getStandardButtons() as an int: PySide6's enum flags do not convert with
+    int() (FreeCAD 1.1 printed a TypeError for every panel opened)."""
+    from freecad_workbench.features.blend_shape import make_blend_shape
+    from freecad_workbench.gui.qt import QtWidgets
+
+    def value(flag):
+        return flag.value if hasattr(flag, "value") else int(flag)
+
+    panel = open_panel(make_blend_shape(active, SHAPE_KINDS[0]))
+    buttons = panel.getStandardButtons()
+    close(panel)
+    assert type(buttons) is int
+    assert buttons == value(QtWidgets.QDialogButtonBox.Ok) | value(QtWidgets.QDialogButtonBox.Cancel)

@@ -4,6 +4,7 @@
 #include "clothoid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -267,9 +268,11 @@ Candidate newton(Spiral s, double Theta) {
 /// softmax of (0, z): monotone by construction. Residuals: the end point, the turning, and
 /// sqrt(mu) (n step_i - 1), which pulls towards the clothoid (equal steps); mu goes to 1e-12
 /// so that the ends are met to rounding. The start has equal steps (profile 0), steps growing
-/// towards the end (1) or the start (2), or steps at the two ends (3, like a triarc).
-/// nullopt where it does not reach the ends.
-std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n, int profile) {
+/// towards the end (1) or the start (2), or steps at the two ends (3, like a triarc). A weak
+/// pull (mu from 1e-4 to 1e-8) lets the steps go far from equal: the last resort, for ends
+/// whose curvature must change almost all at once. nullopt where it does not reach the ends.
+std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n, int profile,
+                                             bool weakPull) {
   const int m = n;  // parameters
   constexpr double kFloor = 1.25 * kMinSlope;  // every step at least kFloor / n: n step >= kFloor
   auto build = [&](const Eigen::VectorXd& x) {
@@ -307,7 +310,9 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
     if (profile == 2) x[i] = -3.0 * i / (n - 1.0);
     if (profile == 3) x[i] = i == n - 1 ? 0.0 : -3.0;
   }
-  for (double mu : {1e-2, 1e-4, 1e-6}) {
+  const std::array<double, 3> pulls = weakPull ? std::array<double, 3>{1e-4, 1e-6, 1e-8}
+                                              : std::array<double, 3>{1e-2, 1e-4, 1e-6};
+  for (double mu : pulls) {
     double lambda = 1e-3;
     Eigen::VectorXd r = residuals(x, mu);
     for (int it = 0; it < 60; ++it) {
@@ -448,10 +453,12 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
       std::vector<double> starts{1.02, 1.5, 3.0, 1.003};
       if (std::abs(g1Turning - Theta) < 1e-9) starts.insert(starts.begin(), g1.length);
       bool done = false;
-      for (int attempt = 0; attempt < 8 && !done; ++attempt) {
-        const int profile = attempt % 4, pieces = attempt < 4 ? 8 : 16;
+      // 8 pieces, then 16, then 8 with a weak pull towards equal steps.
+      for (int attempt = 0; attempt < 12 && !done; ++attempt) {
+        const int profile = attempt % 4, pieces = attempt >= 4 && attempt < 8 ? 16 : 8;
         for (double L0 : starts) {
-          const std::optional<ClothoidSpline> c = clothoidSpline(theta0, k0, k1, Theta, L0, pieces, profile);
+          const std::optional<ClothoidSpline> c =
+              clothoidSpline(theta0, k0, k1, Theta, L0, pieces, profile, attempt >= 8);
           if (!c || c->minSlope() < kMinSlope) continue;
           if (!out.spline || c->variation() < out.spline->variation()) out.spline = c;
           done = true;

@@ -39,21 +39,29 @@ CONTINUITY_LABELS = {
 }
 
 _LABELS = {
-    "Radius": "Radius",
-    "Radius0": "Radius at height 0",
-    "Slope": "Slope (radius per height)",
-    "MajorRadius": "Major radius",
-    "MinorRadius": "Minor radius",
-    "Longitudes": "Longitudes (°)",
-    "Latitudes": "Latitudes (°)",
-    "Angles": "Angles (°)",
-    "Heights": "Heights",
-    "AnglesU": "Angles around the axis (°)",
-    "AnglesV": "Angles around the tube (°)",
-    "AroundCount": "Arcs around",
-    "ProfileCount": "Pieces along the profile",
-    "ProfileStart": "Profile from",
-    "ProfileEnd": "Profile to",
+    "Radius": QT_TRANSLATE_NOOP("FairSplines", "Radius"),
+    "Radius0": QT_TRANSLATE_NOOP("FairSplines", "Radius at height 0"),
+    "Slope": QT_TRANSLATE_NOOP("FairSplines", "Slope"),
+    "MajorRadius": QT_TRANSLATE_NOOP("FairSplines", "Major radius"),
+    "MinorRadius": QT_TRANSLATE_NOOP("FairSplines", "Minor radius"),
+    "Longitudes": QT_TRANSLATE_NOOP("FairSplines", "Longitudes (°)"),
+    "Latitudes": QT_TRANSLATE_NOOP("FairSplines", "Latitudes (°)"),
+    "Angles": QT_TRANSLATE_NOOP("FairSplines", "Angles (°)"),
+    "Heights": QT_TRANSLATE_NOOP("FairSplines", "Heights"),
+    "AnglesU": QT_TRANSLATE_NOOP("FairSplines", "Around the axis (°)"),
+    "AnglesV": QT_TRANSLATE_NOOP("FairSplines", "Around the tube (°)"),
+    "AroundCount": QT_TRANSLATE_NOOP("FairSplines", "Arcs around"),
+    "ProfileCount": QT_TRANSLATE_NOOP("FairSplines", "Profile pieces"),
+    "ProfileStart": QT_TRANSLATE_NOOP("FairSplines", "Profile from"),
+    "ProfileEnd": QT_TRANSLATE_NOOP("FairSplines", "Profile to"),
+}
+
+# The long words of the short labels above.
+_TOOLTIPS = {
+    "Slope": QT_TRANSLATE_NOOP("FairSplines", "How much the radius grows per unit of height"),
+    "AnglesU": QT_TRANSLATE_NOOP("FairSplines", "Angles around the torus' axis, in degrees, where the arcs meet"),
+    "AnglesV": QT_TRANSLATE_NOOP("FairSplines", "Angles around the tube, in degrees, where the profile's arcs meet"),
+    "ProfileCount": QT_TRANSLATE_NOOP("FairSplines", "Pieces along the profile (its arcs or segments)"),
 }
 
 
@@ -126,9 +134,9 @@ class BlendShapePanel(LiveEditPanel):
                                                             "C1: (4,2) double strip to biquadratic NURBS (Section 5)"))
         self.continuity.currentIndexChanged.connect(lambda i: self.set_continuity(CONTINUITIES[i]))
         bottom.addRow(translate("FairSplines", "Continuous in"), self.continuity)
-        self.naive = QtWidgets.QCheckBox(translate("FairSplines", "Plain join (to compare)"))
-        self.naive.setToolTip(translate("FairSplines", "The paper's naive blend (Fig. 2a): the shape and the "
-                                                       "ring joined without the transition strip; its seams show"))
+        self.naive = QtWidgets.QCheckBox(translate("FairSplines", "Plain join"))
+        self.naive.setToolTip(translate("FairSplines", "To compare: the paper's naive blend (Fig. 2a), the shape "
+                                                       "and the ring joined without the transition strip; its seams show"))
         self.naive.setChecked(bool(obj.Naive))
         self.naive.toggled.connect(self.set_naive)
         bottom.addRow(self.naive)
@@ -210,6 +218,8 @@ class BlendShapePanel(LiveEditPanel):
                         widget = self._spin(0.0, 1e9, " mm")
                     widget.setValue(float(getattr(value, "Value", value)))
                     widget.valueChanged.connect(lambda v, n=name: self.set_dimension(n, v))
+                if name in _TOOLTIPS:
+                    widget.setToolTip(translate("FairSplines", _TOOLTIPS[name]))
                 self.dimensions.addRow(label, widget)
                 self.widgets[name] = widget
         finally:

@@ -39,7 +39,7 @@ class CombTaskPanel:
         self.samples.setRange(8, 100000)
         self.samples.setValue(self.initial[1])
         self.samples.setToolTip(translate("FairSplines", "Teeth per edge (at least)"))
-        self.common = QtWidgets.QCheckBox(translate("FairSplines", "Same scale for all combs"))
+        self.common = QtWidgets.QCheckBox(translate("FairSplines", "One scale for all"))
         self.common.setChecked(self.initial[2])
         self.common.setToolTip(translate(
             "FairSplines",

@@ -9,7 +9,7 @@ import FreeCAD
 
 from ...features.edit_polygon import reset_pole, set_pole, source_edge
 from .. import icon_path
-from .form import LiveEdit, LiveEditPanel, compact, form_rows, show_status, wrapped_label
+from .form import LiveEdit, LiveEditPanel, button_column, compact, form_rows, show_status, wrapped_label
 from ..overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
@@ -56,14 +56,11 @@ class EditPolygonPanel(LiveEditPanel):
             coords.addRow(axis, spin)
             self.spins.append(spin)
         layout.addLayout(coords)
-        buttons = QtWidgets.QHBoxLayout()
         self.reset_button = QtWidgets.QPushButton(translate("FairSplines", "Reset pole"))
         self.reset_button.clicked.connect(lambda: self.reset(self.selected))
         self.reset_all_button = QtWidgets.QPushButton(translate("FairSplines", "Reset all"))
         self.reset_all_button.clicked.connect(self.reset_all)
-        buttons.addWidget(self.reset_button)
-        buttons.addWidget(self.reset_all_button)
-        layout.addLayout(buttons)
+        layout.addLayout(button_column(self.reset_button, self.reset_all_button))
         self.count_label = wrapped_label()
         layout.addWidget(self.count_label)
         self.status_label = wrapped_label()

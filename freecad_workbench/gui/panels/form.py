@@ -3,9 +3,11 @@ status line, and live editing of an object's properties: every change is applied
 recomputed at once (the preview), inside one undo step; OK keeps it, Cancel restores the
 values the panel opened with.
 
-Fit: FreeCAD's side panel is about 230-300 px wide by default. Every panel here keeps its
+Fit: FreeCAD's side panel is about 230-300 px wide by default; FreeCAD 1.1's (Qt6) left
+200 px beside its vertical scroll bar in the GUI test run. Every panel here keeps its
 minimum width within PANEL_WIDTH (tests/gui/test_panels.py opens each one and checks):
-one value per row in form layouts, spin boxes that may shrink to SPIN_WIDTH, long texts
+one value per row in form layouts, spin boxes that may shrink to SPIN_WIDTH, buttons
+stacked (button_column), short labels with the long words in tooltips, long texts
 word-wrapped.
 
 FreeCAD closes a transaction a command opened when the command returns, so the step is
@@ -16,7 +18,7 @@ import FreeCAD
 
 translate = FreeCAD.Qt.translate
 
-PANEL_WIDTH = 220  # px: what a panel's form may need at least: it fits a 260 px side panel with its scroll bar
+PANEL_WIDTH = 185  # px: what a panel's form may need at least: 15 px inside the 200 px seen on FreeCAD 1.1
 SPIN_WIDTH = 72  # px: a spin box may shrink to this
 ERROR_STYLE = "color: #c00000;"
 WARNING_STYLE = "color: #a05a00;"
@@ -50,6 +52,17 @@ def compact(widget, width=SPIN_WIDTH):
     return widget
 
 
+def button_column(*widgets):
+    """Buttons (or check boxes) one under the other: two side by side need 166 px or more
+    with Qt6's Fusion style (80 px a button at least), too much beside a form's margins."""
+    from ..qt import QtWidgets
+
+    column = QtWidgets.QVBoxLayout()
+    for widget in widgets:
+        column.addWidget(widget)
+    return column
+
+
 def vector_rows(rows, spins, axes="XYZ"):
     """One row per coordinate (X, Y, Z) in a form layout: three spin boxes side by side do
     not fit the side panel. Returns the spin boxes."""
@@ -59,15 +72,16 @@ def vector_rows(rows, spins, axes="XYZ"):
     return spins
 
 
-def fit_table(table, width=PANEL_WIDTH - 40):
-    """A table whose columns share the panel's width instead of scrolling sideways."""
+def fit_table(table, width=120):
+    """A table whose columns share the panel's width instead of scrolling sideways; it may
+    shrink to `width` px."""
     from ..qt import QtCore, QtWidgets
 
     header = table.horizontalHeader()
     header.setSectionResizeMode(QtWidgets.QHeaderView.Stretch)
     header.setMinimumSectionSize(24)
     table.setHorizontalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)
-    table.setMinimumWidth(min(width, 160))
+    table.setMinimumWidth(width)
     return table
 
 
@@ -188,7 +202,9 @@ class LiveEditPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        return int(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
+        buttons = QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel
+        # PySide2's flags convert with int(); PySide6's are Python enum flags, with .value.
+        return buttons.value if hasattr(buttons, "value") else int(buttons)
 
     def accept(self):
         self.session.commit()

@@ -15,7 +15,7 @@ import FreeCAD
 
 from ...features.design_spline import get_marks, piece_curves, set_marks
 from .. import icon_path
-from .form import LiveEdit, LiveEditPanel, show_status, wrapped_label
+from .form import LiveEdit, LiveEditPanel, button_column, show_status, wrapped_label
 from ..overlay import Overlay, active_view
 
 translate = FreeCAD.Qt.translate
@@ -87,7 +87,6 @@ class MarkPointsPanel(LiveEditPanel):
             info = QtWidgets.QLabel()
             info.setWordWrap(True)
             group_layout.addWidget(info)
-            buttons = QtWidgets.QHBoxLayout()
             add = QtWidgets.QPushButton(translate("FairSplines", "Add mark"))
             add.setToolTip(translate("FairSplines", "Add a mark in the middle of the widest gap"))
             add.clicked.connect(lambda checked=False, p=piece: self.add_mark(p))
@@ -95,10 +94,7 @@ class MarkPointsPanel(LiveEditPanel):
             reverse.setToolTip(translate("FairSplines", "Run this piece from its end to its start"))
             reverse.setChecked(self.reversed[piece])
             reverse.toggled.connect(lambda flag, p=piece: self.set_reversed(p, flag))
-            buttons.addWidget(add)
-            buttons.addWidget(reverse)
-            buttons.addStretch(1)
-            group_layout.addLayout(buttons)
+            group_layout.addLayout(button_column(add, reverse))
             self.pieces_layout.addWidget(group)
             self.groups.append(group)
             self.grids.append(grid)
@@ -134,13 +130,13 @@ class MarkPointsPanel(LiveEditPanel):
         for index in range(len(self.marks[piece])):
             slider = QtWidgets.QSlider(QtCore.Qt.Horizontal)
             slider.setTracking(True)
-            slider.setMinimumWidth(60)
+            slider.setMinimumWidth(36)
             spin = QtWidgets.QDoubleSpinBox()
             spin.setDecimals(DECIMALS)
             spin.setSingleStep(0.01)
             spin.setKeyboardTracking(False)
             spin.setButtonSymbols(QtWidgets.QAbstractSpinBox.NoButtons)
-            spin.setMinimumWidth(56)
+            spin.setMinimumWidth(50)
             spin.setMaximumWidth(64)
             remove = QtWidgets.QToolButton()
             remove.setText("\u2212")

@@ -7,7 +7,7 @@ import FreeCADGui
 from ... import monotone
 from ...errors import InputError
 from .. import icon_path
-from .form import fit_table, wrapped_label
+from .form import button_column, fit_table, wrapped_label
 
 translate = FreeCAD.Qt.translate
 
@@ -57,12 +57,9 @@ class MonotoneDesignTaskPanel:
             [translate("FairSplines", "X (mm)"), translate("FairSplines", "Y (mm)"), translate("FairSplines", "Moved")])
         fit_table(self.table)
         layout.addWidget(self.table)
-        buttons = QtWidgets.QHBoxLayout()
         self.add_button = QtWidgets.QPushButton(translate("FairSplines", "Add vector"))
         self.remove_button = QtWidgets.QPushButton(translate("FairSplines", "Remove last"))
-        buttons.addWidget(self.add_button)
-        buttons.addWidget(self.remove_button)
-        layout.addLayout(buttons)
+        layout.addLayout(button_column(self.add_button, self.remove_button))
         self.status = wrapped_label()
         layout.addWidget(self.status)
         first = obj.FirstVector
