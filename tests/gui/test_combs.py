@@ -256,7 +256,7 @@ def test_same_scale_for_all_combs_makes_teeth_comparable(scene):
 
     panel = active_comb_panel()
     assert not panel.common.isChecked()
-    panel.common.setChecked(True)  # "Same scale for all combs"
+    panel.common.setChecked(True)  # "One scale for all"
     assert preferences.get("CombCommonScale") is True
     common = ratios()
     assert common[0] == pytest.approx(common[1], rel=1e-3)
