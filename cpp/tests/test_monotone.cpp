@@ -380,7 +380,7 @@ TEST(Monotone, Algorithm2_GridAgreesOnFeasibilityWhereverItFindsACurve) {
 }
 
 TEST(Monotone, Algorithm2_ReadingC1AsT1TimesMFindsNothingInThePapersRange) {
-  // MATH-NOTES reads "C_1 = t_1 P" as C_1 = t_1 M. With the paper's 0 < t_1 < 1/6 (step 0.02)
+  // docs/READINGS.md reads "C_1 = t_1 P" as C_1 = t_1 M. With the paper's 0 < t_1 < 1/6 (step 0.02)
   // no candidate of 50 random admissible ends passes Lemmas 1-3: the bounds are in units of
   // C4.x (README), which the kernel's grid uses.
   const double knots[9] = {0, 0, 0, 0, 1, 2, 2, 2, 2};

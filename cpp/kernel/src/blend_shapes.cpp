@@ -155,7 +155,7 @@ G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const 
         const auto c = circle.cubic.row(4 * I + r);  // (x w1, y w1, w1)
         for (int q = 0; q < 4; ++q) {
           const auto p = profile.row(4 * J + q);  // (rho w2, zeta w2, w2)
-          // Tensor form (MATH-NOTES): (rho x1, rho y1, zeta w1 | omega w1) in the frame.
+          // Tensor form (docs/READINGS.md, blending paper): (rho x1, rho y1, zeta w1 | omega w1) in the frame.
           const Eigen::Vector3d local = p[0] * c[0] * frame.x + p[0] * c[1] * frame.y + p[1] * c[2] * frame.z;
           const double weight = p[2] * c[2];
           s.point(I, J, r, q) << (local + weight * frame.origin).transpose(), weight;

@@ -9,7 +9,7 @@
 
 namespace fairsplines::detail {
 
-/// Tensor form of a surface of revolution (MATH-NOTES): circle rows (x w1, y w1, w1) in u
+/// Tensor form of a surface of revolution (docs/READINGS.md, blending paper): circle rows (x w1, y w1, w1) in u
 /// times profile rows (rho w2, zeta w2, w2) in v: b_ab = (rho_b x_a, rho_b y_a, zeta_b w_a | omega_b w_a)
 /// in the frame; row a * profile.rows() + b. Any numbers of rows (any degrees).
 Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile);

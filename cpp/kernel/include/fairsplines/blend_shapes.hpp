@@ -1,7 +1,7 @@
 // Basic shapes as G2 rational bi-cubic splines: Karčiauskas & Peters, "Free-Form Splines
 // Combining NURBS and Basic Shapes", Section 2, eqs. (1)-(4). Every shape is a tensor
 // product, in homogeneous form, of the G2 rational cubic circle pieces of eq. (2) (around
-// the axis) with a rational cubic profile (see MATH-NOTES, "blending paper").
+// the axis) with a rational cubic profile (docs/READINGS.md, "blending paper").
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -76,7 +76,7 @@ struct G2Surface {
 
 /// Surface of revolution of a G2 rational cubic profile (homogeneous rows (w rho, w zeta, w):
 /// distance from the axis and height) about frame.z, with the circle partition in u. The
-/// tensor form of MATH-NOTES: b_rs = (rho_s x_r, rho_s y_r, zeta_s w_r, omega_s w_r) in the
+/// tensor form of docs/READINGS.md: b_rs = (rho_s x_r, rho_s y_r, zeta_s w_r, omega_s w_r) in the
 /// frame. `profileBeta`/`profileGamma` follow the layout of G2Surface::betaV.
 G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const Eigen::VectorXd& profileBeta,
                     const Eigen::VectorXd& profileGamma, bool profileClosed, const G2CircleSpline& circle);
