@@ -31,7 +31,7 @@ std::string num(double v, int digits = 4) {
   return out.str();
 }
 
-// The knot vector (0, 0, 0, 0, 1, 2, 2, 2, 2) of Algorithm 2's five poles (docs/READINGS.md, monotone paper, Algorithm 2).
+// The knot vector (0, 0, 0, 0, 1, 2, 2, 2, 2) of Algorithm 2's five poles (docs/READINGS.md, monotone paper).
 constexpr double kAlg2Knots[9] = {0, 0, 0, 0, 1, 2, 2, 2, 2};
 
 BSplineCurve alg2Curve(PointMatrix poles) {
