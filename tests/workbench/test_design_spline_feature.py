@@ -230,7 +230,7 @@ def test_moving_a_sketch_edge_recomputes_the_design(doc):
     assert (design.Shape.Edges[0].Curve.EndPoint - SKETCH_PLACEMENT.multVec(V(-5, 18, 0))).Length < 1e-12
 
 
-def test_changing_marks_and_tolerance_recomputes(doc):
+def test_changing_marks_recomputes(doc):
     sketch = profile_sketch(doc)
     design = make_profile_design(doc, sketch)
     new = [[0.5], [0.05, 0.3, 0.55, 0.8, 0.95], []]
