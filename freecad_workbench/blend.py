@@ -21,7 +21,7 @@ from collections import namedtuple
 
 from . import _kernel
 from .errors import InputError
-from .kernel import adopt, has_bridge, surface_from_part, surface_to_part
+from .kernel import adopt, as_choice, has_bridge, surface_from_part, surface_to_part
 from .shapes import Cone, Cylinder, SphereZone, Torus
 
 BlendResult = namedtuple("BlendResult", "patches shell surface")
@@ -36,10 +36,8 @@ _METHODS = ("rho", "sigma", "mixed")
 
 
 def _check(shape, continuity, method):
-    if continuity not in ("C2", "C1"):
-        raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
-    if method not in _METHODS:
-        raise InputError(f"method must be one of {_METHODS}, not {method!r}")
+    as_choice(continuity, "continuity", ("C2", "C1"))
+    as_choice(method, "method", _METHODS)
     if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
         raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
     check_cost(shape)
@@ -108,8 +106,7 @@ def _interface(shape, at):
     """'end' or 'start'; None chooses the end unless it is a pole (a dome)."""
     if at is None:
         return "start" if shape.pole_at("end") and not shape.pole_at("start") else "end"
-    if at not in ("end", "start"):
-        raise InputError(f"at must be 'end', 'start' or None, not {at!r}")
+    as_choice(at, "at", ("end", "start"))
     return at
 
 

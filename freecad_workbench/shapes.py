@@ -12,7 +12,7 @@ import numpy as np
 from . import _kernel
 from .basic import _frame, _vector3
 from .errors import InputError
-from .kernel import surface_to_part
+from .kernel import as_real, surface_to_part
 
 
 def _angles(values, name):
@@ -75,12 +75,13 @@ class _Shape:
         patch (i, j) to `point`, optionally with a new positive weight. The patches then
         leave the shape where edited; fw.blend_basic_shape joins the edited structure (C2
         along the interface, arc joins next to an edit adjusted by eq. (11))."""
+        current = self.control_point(i, j, r, s)  # checks the indices
+        weight = current[1] if weight is None else as_real(weight, "weight", finite=False)
+        point = _vector3(point, "point")
         if self._control is None:
             self._control = self.g2()
-        if weight is None:
-            weight = self.control_point(i, j, r, s)[1]
         try:
-            self._control.set_control(int(i), int(j), int(r), int(s), _vector3(point, "point"), float(weight))
+            self._control.set_control(int(i), int(j), int(r), int(s), point, weight)
         except (TypeError, IndexError) as exc:
             raise InputError(f"set_control: {exc}") from None
 
@@ -101,7 +102,7 @@ class SphereZone(_Shape):
 
     def __init__(self, center, radius, longitudes, latitudes, axis=(0, 0, 1), x_axis=None):
         super().__init__(center, axis, x_axis)
-        self.radius = float(radius)
+        self.radius = as_real(radius, "radius", finite=False)
         self.longitudes = _angles(longitudes, "longitudes")
         self.latitudes = _angles(latitudes, "latitudes")
         self.g2()  # validate now: InputError names the problem
@@ -127,7 +128,7 @@ class Cylinder(_Shape):
 
     def __init__(self, center, radius, angles, heights, axis=(0, 0, 1), x_axis=None):
         super().__init__(center, axis, x_axis)
-        self.radius = float(radius)
+        self.radius = as_real(radius, "radius", finite=False)
         self.angles = _angles(angles, "angles")
         self.heights = _angles(heights, "heights")
         self.g2()
@@ -148,7 +149,7 @@ class Cone(_Shape):
 
     def __init__(self, center, radius0, slope, angles, heights, axis=(0, 0, 1), x_axis=None):
         super().__init__(center, axis, x_axis)
-        self.radius0, self.slope = float(radius0), float(slope)
+        self.radius0, self.slope = as_real(radius0, "radius0", finite=False), as_real(slope, "slope", finite=False)
         self.angles = _angles(angles, "angles")
         self.heights = _angles(heights, "heights")
         self.g2()
@@ -170,7 +171,8 @@ class Torus(_Shape):
 
     def __init__(self, center, major_radius, minor_radius, angles_u, angles_v, axis=(0, 0, 1), x_axis=None):
         super().__init__(center, axis, x_axis)
-        self.major_radius, self.minor_radius = float(major_radius), float(minor_radius)
+        self.major_radius = as_real(major_radius, "major_radius", finite=False)
+        self.minor_radius = as_real(minor_radius, "minor_radius", finite=False)
         self.angles_u = _angles(angles_u, "angles_u")
         self.angles_v = _angles(angles_v, "angles_v")
         self.g2()
