@@ -75,20 +75,24 @@ class BasicCurve:
             raise InputError(f"the {type(self).__name__}'s size is not finite: its numbers are too large, too small "
                              "or too close together")
 
-    def value(self, u):
+    def _jet(self, which, u):
+        """value, d1 or d2 at u as a FreeCAD Vector; InputError where it is not finite (far
+        outside [0, 1] the extrapolation overflows)."""
         import FreeCAD
 
-        return FreeCAD.Vector(*self._curve.value(as_real(u, "u")))
+        v = getattr(self._curve, which)(as_real(u, "u"))
+        if not np.all(np.isfinite(v)):
+            raise InputError(f"{which}({u!r}) of the {type(self).__name__} is not finite: u is too far outside [0, 1]")
+        return FreeCAD.Vector(*v)
+
+    def value(self, u):
+        return self._jet("value", u)
 
     def d1(self, u):
-        import FreeCAD
-
-        return FreeCAD.Vector(*self._curve.d1(as_real(u, "u")))
+        return self._jet("d1", u)
 
     def d2(self, u):
-        import FreeCAD
-
-        return FreeCAD.Vector(*self._curve.d2(as_real(u, "u")))
+        return self._jet("d2", u)
 
     def parameter_of(self, point, tolerance=1e-9):
         """u of a point on the curve; InputError if it is farther than tolerance x size."""

@@ -95,6 +95,7 @@ def freeform_knots(shape, method="rho", continuity="C2"):
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
     arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
     "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
+    as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
         from .blend_c1 import freeform_knots_c1
         return freeform_knots_c1(shape)
@@ -134,12 +135,13 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     joined as edited: C2 along the interface and across the strip, the rows across the
     profile G2 (its .surface is then None). continuity "C1": Section 5, a biquadratic ring
     and a (4,2) double strip (blend_c1.py; method unused)."""
+    as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
         from .blend_c1 import blend_basic_shape_c1
 
+        _check(shape, continuity, method)
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
-        _check(shape, continuity, method)
         return blend_basic_shape_c1(shape, freeform, at=_interface(shape, at))
     _check(shape, continuity, method)
     if shape.edited:

@@ -30,7 +30,7 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError, NoMonotoneSolution
-from .kernel import as_choice, as_vector, to_part
+from .kernel import _require_bounded, as_choice, as_vector, to_part
 from .monotone import METHODS as PAPER_METHODS
 from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
 
@@ -163,6 +163,7 @@ def _edge_of(item, name):
 
 def _end_parameter(edge, end, name):
     first, last = edge.FirstParameter, edge.LastParameter
+    _require_bounded(first, last, type(edge.Curve).__name__)
     if isinstance(end, str):
         if end not in END_NAMES:
             raise InputError(f"{name} must be 'start', 'end', a vertex or a point, got {end!r}")

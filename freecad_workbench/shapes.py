@@ -12,7 +12,7 @@ import numpy as np
 from . import _kernel
 from .basic import _frame, _vector3
 from .errors import InputError
-from .kernel import as_real, surface_to_part
+from .kernel import as_choice, as_real, surface_to_part
 
 
 def _angles(values, name):
@@ -47,6 +47,7 @@ class _Shape:
     def pole_at(self, end):
         """True where the profile's `end` ('start' or 'end') lies on the axis (a dome's pole):
         nothing can be joined there."""
+        as_choice(end, "end", ("start", "end"))
         return False
 
     @property
@@ -119,7 +120,7 @@ class SphereZone(_Shape):
         return _kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes, self.latitudes)
 
     def pole_at(self, end):
-        latitude = self.latitudes[-1] if end == "end" else self.latitudes[0]
+        latitude = self.latitudes[-1] if as_choice(end, "end", ("start", "end")) == "end" else self.latitudes[0]
         return abs(abs(latitude) - np.pi / 2) < 1e-9
 
 

@@ -168,3 +168,33 @@ def test_basic_curves_whose_size_overflows_are_refused(make):
     """Their size() was inf."""
     with pytest.raises(fw.InputError, match="size is not finite"):
         make()
+
+
+@pytest.mark.parametrize("which", ["value", "d1", "d2"])
+def test_basic_curve_jets_far_outside_the_range_are_refused(which):
+    """LineSegment.d1(-2**53) was (nan, nan, nan) from the kernel's extrapolation."""
+    line = fw.basic.LineSegment((0, 0, 0), (1, 2, 0))
+    refused(getattr(line, which), -9007199254740992.0, match="not finite: u is too far outside")
+    assert getattr(line, which)(0.25).Length >= 0  # inside the range nothing changes
+
+
+def test_array_choices_are_refused_before_any_comparison():
+    """`continuity == "C1"` and `end == "end"` with an array was numpy's ambiguous-truth ValueError."""
+    cone = fw.shapes.Cone((0, 0, 0), 1, 0.2, [0, 1, 2], [0, 1])
+    choice = np.array(["a", "b"])
+    refused(fw.blend_basic_shape, cone, continuity=choice, match="continuity")
+    refused(fw.freeform_knots, cone, continuity=choice, match="continuity")
+    refused(cone.pole_at, choice, match="end")
+    zone = fw.shapes.SphereZone((0, 0, 0), 10, [0, 1, 2.5, 4, 2 * math.pi], [-0.5, 0.2, 0.7])
+    refused(zone.pole_at, choice, match="end")
+
+
+def test_fair_blend_refuses_unbounded_edges():
+    """An infinite Part.Line ended at -2e100: the blend's variation was NaN."""
+    arc = Part.ArcOfCircle(Part.Circle(V(2, 1, 0), V(0, 0, 1), 1), math.pi, 1.5 * math.pi)
+    refused(fw.fair_blend, arc, "start", Part.Line(V(0, 0, 0), V(1, 0, 0)), "start", match="unbounded")
+
+
+def test_c1_blend_of_a_non_shape_is_refused_by_name():
+    """shape.edited was read before the shape was checked: an AttributeError."""
+    refused(fw.blend_basic_shape, fw.basic.CircleArc(), continuity="C1", match="shape must be one of")
