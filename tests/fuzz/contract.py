@@ -22,6 +22,9 @@ def _fail(what, func, args, kwargs, detail):
     raise ContractError(f"{what} in {name}(*{args!r}, **{kwargs!r}): {detail}")
 
 
+CALLS = {"refused": 0, "returned": 0}  # how the examples came out (for tuning the strategies)
+
+
 def check_call(func, *args, time_bound=TIME_BOUND, **kwargs):
     """Call func(*args, **kwargs) and check the contract. Returns the result, or None when an
     InputError was raised. Any other exception, a non-finite number in the result, invalid
@@ -35,6 +38,7 @@ def check_call(func, *args, time_bound=TIME_BOUND, **kwargs):
             _fail("slow refusal", func, args, kwargs, f"{elapsed:.2f} s > {time_bound} s")
         if not str(exc).strip():
             _fail("InputError without a message", func, args, kwargs, repr(exc))
+        CALLS["refused"] += 1
         return None
     except Exception as exc:  # noqa: BLE001  (the contract: nothing else may escape)
         _fail(f"{type(exc).__name__} escaped", func, args, kwargs, str(exc))
@@ -45,6 +49,7 @@ def check_call(func, *args, time_bound=TIME_BOUND, **kwargs):
         check_value(result)
     except ContractError as exc:
         _fail("invalid result", func, args, kwargs, str(exc))
+    CALLS["returned"] += 1
     return result
 
 

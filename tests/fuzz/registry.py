@@ -26,14 +26,19 @@ def _args(func_getter, args, kwargs):
         lambda t: (t[0](), t[1], t[2]))
 
 
-def register(name, args=(), kwargs=None, examples=25):
+def register(name, args=(), kwargs=None, examples=25, valid=None):
+    """valid: arguments that are mostly good (half the examples), so that the work behind
+    the argument checks is fuzzed too."""
     def getter():
         obj = fw
         for part in name.split("."):
             obj = getattr(obj, part)
         return obj
 
-    REGISTRY[name] = Entry(_args(getter, args, kwargs or {}), examples)
+    strategy = _args(getter, args, kwargs or {})
+    if valid is not None:
+        strategy = st.one_of(strategy, _args(getter, valid, {}))
+    REGISTRY[name] = Entry(strategy, examples)
 
 
 def register_method(prefix, method, instances, args=(), kwargs=None, examples=25):
@@ -44,21 +49,23 @@ def register_method(prefix, method, instances, args=(), kwargs=None, examples=25
 
 
 PARAM = S.choice_arg("chordal", "centripetal", "uniform")
+GOOD_POINTS = [S.good_points]
+GOOD_ENDS = [S.good_vector] * 4
 FIT = dict(closed=S.flag_arg, parametrization=PARAM)
 
 # ---- curves -------------------------------------------------------------------------------
-register("csr_spline", [S.points_arg], dict(FIT, epsilon=S.number_arg, epsilon_rule=S.choice_arg("case", "additive"),
+register("csr_spline", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(FIT, epsilon=S.number_arg, epsilon_rule=S.choice_arg("case", "additive"),
                                              parameters=S.parameters_arg), examples=60)
-register("interpolate_classic", [S.points_arg], FIT, examples=40)
-register("quasi_interpolant", [S.points_arg], FIT, examples=40)
-register("control_point_spline", [S.points_arg], dict(closed=S.flag_arg), examples=40)
-register("quadratic_design", [S.points_arg], dict(FIT, epsilon=S.number_arg), examples=40)
+register("interpolate_classic", [S.points_arg], valid=GOOD_POINTS, kwargs=FIT, examples=40)
+register("quasi_interpolant", [S.points_arg], valid=GOOD_POINTS, kwargs=FIT, examples=40)
+register("control_point_spline", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(closed=S.flag_arg), examples=40)
+register("quadratic_design", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(FIT, epsilon=S.number_arg), examples=40)
 
 # ---- analysis -----------------------------------------------------------------------------
 register("curvature_profile", [S.curve_arg_no_nan], dict(n=S.count_arg), examples=30)
 register("curvature_sign_changes", [S.curve_arg], dict(samples_per_span=S.count_arg), examples=30)
 register("curvature_extrema", [S.curve_arg], dict(n=S.count_arg), examples=30)
-register("max_distance", [S.curve_arg, S.points_arg], examples=30)
+register("max_distance", [S.curve_arg, S.points_arg], valid=[S.curve_arg, S.good_points], examples=30)
 
 # ---- design with basic curves -------------------------------------------------------------
 marks = st.one_of(st.lists(S.number_arg, max_size=6), st.lists(st.floats(0, 1), max_size=6).map(sorted),
@@ -73,25 +80,25 @@ register("approximation_error", [st.one_of(S.basic_curve, S.junk), marks], dict(
 CONT = S.choice_arg("C2", "C1")
 METHOD = S.choice_arg("rho", "sigma", "mixed")
 AT = st.one_of(st.none(), S.choice_arg("end", "start"))
-register("blend_basic_shape", [S.shape_arg], dict(freeform=S.freeform_arg, continuity=CONT, method=METHOD, at=AT),
+register("blend_basic_shape", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.freeform_arg, continuity=CONT, method=METHOD, at=AT),
          examples=12)
-register("blend_naive", [S.shape_arg], dict(freeform=S.freeform_arg, continuity=CONT, at=AT), examples=10)
-register("join_basic_shapes", [S.shape_arg, S.shape_arg], dict(continuity=CONT, method=METHOD), examples=10)
-register("join_naive", [S.shape_arg, S.shape_arg], examples=8)
-register("freeform_knots", [S.shape_arg], dict(method=METHOD, continuity=CONT), examples=20)
+register("blend_naive", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.freeform_arg, continuity=CONT, at=AT), examples=10)
+register("join_basic_shapes", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape], kwargs=dict(continuity=CONT, method=METHOD), examples=10)
+register("join_naive", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape], examples=8)
+register("freeform_knots", [S.shape_arg], valid=[S.shape], kwargs=dict(method=METHOD, continuity=CONT), examples=20)
 
 # ---- monotone curvature and fair blends ---------------------------------------------------
 ENDS = [S.planar_vector] * 4
 curvature = st.one_of(st.none(), S.number_arg)
-register("monotone_end_conditions", ENDS, examples=40)
-register("monotone_curvature_solution", ENDS,
-         dict(method=S.choice_arg("paper", "grid", "fairest"), grid_step=S.number_arg), examples=30)
-register("monotone_curvature_spline", ENDS, dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg),
+register("monotone_end_conditions", ENDS, valid=GOOD_ENDS, examples=40)
+register("monotone_curvature_solution", ENDS, valid=GOOD_ENDS,
+         kwargs=dict(method=S.choice_arg("paper", "grid", "fairest"), grid_step=S.number_arg), examples=30)
+register("monotone_curvature_spline", ENDS, valid=GOOD_ENDS, kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg),
                                                  method=S.choice_arg("fair", "paper", "grid")), examples=25)
-register("fair_blend_solution", ENDS, dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg)),
+register("fair_blend_solution", ENDS, valid=GOOD_ENDS, kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg)),
          examples=25)
 END = st.one_of(S.choice_arg("start", "end"), S.vector_arg)
-register("fair_blend", [S.curve_arg, END, S.curve_arg, END], dict(continuity=S.choice_arg("G2", "G1")), examples=25)
+register("fair_blend", [S.curve_arg, END, S.curve_arg, END], valid=[S.curve_arg, S.choice_arg("start", "end")] * 2, kwargs=dict(continuity=S.choice_arg("G2", "G1")), examples=25)
 # Kernel finding: Algorithm 1 of differences 1e307 apart returns NaN differences
 # (clamp_to_fair_locations((1, 0), [(0, 0), (1e307, 1e307), (2e307, 0), (3e307, 1e307), (4e307, 0)])):
 # left out here (points_no_huge).

@@ -27,18 +27,20 @@ def maybe_junk(strategy, junk_weight=1):
     return st.one_of(*([strategy] * 4), *([junk] * junk_weight))
 
 
-number_arg = maybe_junk(numbers)
+number_arg = st.one_of(finite, finite, maybe_junk(numbers))
 small_int = st.one_of(st.integers(-3, 40), st.sampled_from([0, 1, 2, 10 ** 6, 2 ** 31, 2 ** 63, -2 ** 31]))
 count_arg = st.one_of(small_int, numbers, junk)
-flag_arg = st.one_of(st.booleans(), st.sampled_from([0, 1, 2, None, "yes", "", float("nan")]))
+flag_arg = st.one_of(st.booleans(), st.booleans(), st.booleans(), st.sampled_from([0, 1, 2, None, "yes", "", float("nan")]))
 
 
 def choice_arg(*valid):
-    return st.one_of(st.sampled_from(valid), st.sampled_from([None, "", "nope", 1, valid[0].upper(), b"x"]), junk)
+    """Mostly a valid choice (so that the other arguments get through), else a wrong one."""
+    good = st.sampled_from(valid)
+    return st.one_of(good, good, good, good, st.sampled_from([None, "", "nope", 1, valid[0].upper(), b"x"]), junk)
 
 
 # ---- points and vectors ------------------------------------------------------------------
-coord = st.one_of(*([finite] * 6), numbers)
+coord = st.one_of(*([finite] * 20), numbers)  # mostly finite: a list of points is then often valid
 
 
 def _point(dim):
@@ -51,11 +53,12 @@ point3 = _point(3)
 
 @st.composite
 def point_lists(draw, huge=True):
-    kinds = ["2d", "3d", "2d", "3d", "dup", "collinear", "mixed", "ragged", "empty",
+    kinds = ["2d", "3d"] * 6 + ["dup", "collinear", "mixed", "ragged", "empty",
                                  "one", "array", "badarray", "strings", "nested", "vectors", "tiny"] + (["huge"] if huge else [])
     kind = draw(st.sampled_from(kinds))
     if kind in ("2d", "3d"):
-        return draw(st.lists(point2 if kind == "2d" else point3, min_size=0, max_size=12))
+        return draw(st.lists(point2 if kind == "2d" else point3, min_size=draw(st.sampled_from([0, 3, 3, 3])),
+                             max_size=12))
     if kind == "dup":
         p = draw(point3)
         base = draw(st.lists(point3, min_size=1, max_size=5))
@@ -92,7 +95,11 @@ def point_lists(draw, huge=True):
     return [(i * 1e307, (i % 2) * 1e307, 0.0) for i in range(5)]
 
 
-points_arg = st.one_of(point_lists(), junk)
+points_arg = st.one_of(point_lists(), point_lists(), point_lists(), junk)
+_good = st.floats(-100, 100, allow_nan=False)
+good_points = st.one_of(st.lists(st.tuples(_good, _good), min_size=3, max_size=12, unique=True),
+                        st.lists(st.tuples(_good, _good, _good), min_size=3, max_size=12, unique=True))
+good_vector = st.tuples(_good, _good)
 
 
 def _no_huge_values(points):
@@ -112,7 +119,7 @@ def _freecad_vector(draw):
     return FreeCAD.Vector(*draw(st.tuples(finite, finite, finite)))
 
 
-vector_arg = st.one_of(point3, point3, point2, _freecad_vector(),
+vector_arg = st.one_of(point3, point3, point3, point3, point2, point2, _freecad_vector(),
                        st.sampled_from([(0, 0, 0), (1, 0, 0), (0, 0, 1), (0, 1, 0, 1), (1,), (), "abc", [None, 1, 2]]),
                        junk)
 planar_vector = st.one_of(st.tuples(finite, finite), st.tuples(finite, finite, st.just(0.0)), vector_arg)
