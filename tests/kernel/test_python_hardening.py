@@ -198,3 +198,15 @@ def test_fair_blend_refuses_unbounded_edges():
 def test_c1_blend_of_a_non_shape_is_refused_by_name():
     """shape.edited was read before the shape was checked: an AttributeError."""
     refused(fw.blend_basic_shape, fw.basic.CircleArc(), continuity="C1", match="shape must be one of")
+
+
+@pytest.mark.parametrize("make", [
+    lambda a: fw.shapes.Cylinder((0, 0, 0), 1, a, a),
+    lambda a: fw.shapes.Cone((0, 0, 0), 1, 0.1, a, a),
+    lambda a: fw.shapes.SphereZone((0, 0, 0), 1, a, np.linspace(-1, 1, 5000)),
+    lambda a: fw.shapes.Torus((0, 0, 0), 3, 1, a, a),
+], ids=["cylinder", "cone", "sphere zone", "torus"])
+def test_shape_partitions_are_bounded(make):
+    """5000 angles each way (25 million patches) ran out of memory building the G2 structure."""
+    with pytest.raises(fw.InputError, match="patches, more than"):
+        make(np.linspace(0, 2 * math.pi, 5000))
