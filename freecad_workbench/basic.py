@@ -16,7 +16,7 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError
-from .kernel import to_part
+from .kernel import _require_bounded, as_real, as_reals, to_part
 
 __all__ = [
     "BasicCurve",
@@ -71,25 +71,32 @@ class BasicCurve:
 
     def __init__(self, kernel_curve):
         self._curve = kernel_curve
+        if not math.isfinite(kernel_curve.size()):
+            raise InputError(f"the {type(self).__name__}'s size is not finite: its numbers are too large, too small "
+                             "or too close together")
+
+    def _jet(self, which, u):
+        """value, d1 or d2 at u as a FreeCAD Vector; InputError where it is not finite (far
+        outside [0, 1] the extrapolation overflows)."""
+        import FreeCAD
+
+        v = getattr(self._curve, which)(as_real(u, "u"))
+        if not np.all(np.isfinite(v)):
+            raise InputError(f"{which}({u!r}) of the {type(self).__name__} is not finite: u is too far outside [0, 1]")
+        return FreeCAD.Vector(*v)
 
     def value(self, u):
-        import FreeCAD
-
-        return FreeCAD.Vector(*self._curve.value(float(u)))
+        return self._jet("value", u)
 
     def d1(self, u):
-        import FreeCAD
-
-        return FreeCAD.Vector(*self._curve.d1(float(u)))
+        return self._jet("d1", u)
 
     def d2(self, u):
-        import FreeCAD
-
-        return FreeCAD.Vector(*self._curve.d2(float(u)))
+        return self._jet("d2", u)
 
     def parameter_of(self, point, tolerance=1e-9):
         """u of a point on the curve; InputError if it is farther than tolerance x size."""
-        return self._curve.parameter_of(_vector3(point, "point"), float(tolerance))
+        return self._curve.parameter_of(_vector3(point, "point"), as_real(tolerance, "tolerance", minimum=0))
 
     def size(self):
         return self._curve.size()
@@ -124,7 +131,9 @@ class CircleArc(BasicCurve):
                  x_axis=None):
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.radius, self.start_angle, self.end_angle = float(radius), float(start_angle), float(end_angle)
+        self.radius = as_real(radius, "radius", finite=False)
+        self.start_angle = as_real(start_angle, "start_angle", finite=False)
+        self.end_angle = as_real(end_angle, "end_angle", finite=False)
         super().__init__(
             _kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
                               self.end_angle - self.start_angle)
@@ -151,7 +160,10 @@ class EllipseArc(BasicCurve):
                  normal=(0, 0, 1), x_axis=None):
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.a, self.b, self.start, self.end = float(major_radius), float(minor_radius), float(start), float(end)
+        self.a = as_real(major_radius, "major_radius", finite=False)
+        self.b = as_real(minor_radius, "minor_radius", finite=False)
+        self.start = as_real(start, "start", finite=False)
+        self.end = as_real(end, "end", finite=False)
         super().__init__(_kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
                                              self.end - self.start))
 
@@ -163,7 +175,7 @@ class ParabolaArc(BasicCurve):
     def __init__(self, vertex=(0, 0, 0), focal=1.0, t0=-1.0, t1=1.0, normal=(0, 0, 1), x_axis=None):
         self.vertex = _vector3(vertex, "vertex")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.focal, self.t0, self.t1 = float(focal), float(t0), float(t1)
+        self.focal, self.t0, self.t1 = as_real(focal, "focal", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(_kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
 
 
@@ -174,7 +186,10 @@ class HyperbolaArc(BasicCurve):
                  x_axis=None):
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.a, self.b, self.t0, self.t1 = float(major_radius), float(minor_radius), float(t0), float(t1)
+        self.a = as_real(major_radius, "major_radius", finite=False)
+        self.b = as_real(minor_radius, "minor_radius", finite=False)
+        self.t0 = as_real(t0, "t0", finite=False)
+        self.t1 = as_real(t1, "t1", finite=False)
         super().__init__(_kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
 
 
@@ -186,12 +201,17 @@ class RationalCubic(BasicCurve):
         if homogeneous is None:
             if poles is None:
                 raise InputError("give poles (and weights) or homogeneous control points")
+            if isinstance(poles, (str, bytes)) or not hasattr(poles, "__iter__"):
+                raise InputError(f"poles must be a list of points, got {poles!r}")
             p = np.array([_vector3(q, f"pole {i}") for i, q in enumerate(poles)])
-            w = np.ones(len(p)) if weights is None else np.asarray(weights, dtype=float)
+            w = np.ones(len(p)) if weights is None else as_reals(weights, "weights")
             if w.shape != (len(p),):
                 raise InputError(f"expected {len(p)} weights, got {np.shape(w)}")
             homogeneous = np.c_[p * w[:, None], w]
-        h = np.ascontiguousarray(homogeneous, dtype=float)
+        try:
+            h = np.ascontiguousarray(homogeneous, dtype=float)
+        except (TypeError, ValueError):
+            raise InputError(f"homogeneous control points must be rows of 4 numbers, got {homogeneous!r}") from None
         if h.ndim != 2 or h.shape[1] != 4 or not 2 <= h.shape[0] <= 4:
             raise InputError(f"homogeneous control points must be 2 to 4 rows of 4 numbers, got shape {h.shape}")
         self.homogeneous = h
@@ -223,7 +243,10 @@ class ArchimedeanSpiral(_Transcendental):
                  normal=(0, 0, 1), x_axis=None):
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.a, self.b, self.theta0, self.theta1 = float(a), float(b), float(theta0), float(theta1)
+        self.a = as_real(a, "a", finite=False)
+        self.b = as_real(b, "b", finite=False)
+        self.theta0 = as_real(theta0, "theta0", finite=False)
+        self.theta1 = as_real(theta1, "theta1", finite=False)
         super().__init__(
             _kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
         )
@@ -235,7 +258,7 @@ class CircleInvolute(_Transcendental):
     def __init__(self, center=(0, 0, 0), radius=1.0, t0=0.0, t1=math.pi, normal=(0, 0, 1), x_axis=None):
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.radius, self.t0, self.t1 = float(radius), float(t0), float(t1)
+        self.radius, self.t0, self.t1 = as_real(radius, "radius", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(
             _kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
         )
@@ -249,7 +272,7 @@ class ParametricCurve(_Transcendental):
     def __init__(self, function, s0=0.0, s1=1.0, derivative=None, second_derivative=None):
         if not callable(function):
             raise InputError("a parametric curve needs a function f(s) -> point")
-        self.function, self.s0, self.s1 = function, float(s0), float(s1)
+        self.function, self.s0, self.s1 = function, as_real(s0, "s0"), as_real(s1, "s1")
         step = 1e-4 * (self.s1 - self.s0) if self.s1 > self.s0 else 1e-4
 
         def f(s):
@@ -288,6 +311,7 @@ def from_edge(edge):
         else:
             raise InputError(f"not an edge: {type(edge).__name__}")
     curve, t0, t1 = edge.Curve, edge.FirstParameter, edge.LastParameter
+    _require_bounded(t0, t1, type(curve).__name__)
     if isinstance(curve, (Part.Line, Part.LineSegment)):
         return LineSegment(edge.valueAt(t0), edge.valueAt(t1))
     if isinstance(curve, Part.BSplineCurve) or isinstance(curve, Part.BezierCurve):

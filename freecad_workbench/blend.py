@@ -21,7 +21,7 @@ from collections import namedtuple
 
 from . import _kernel
 from .errors import InputError
-from .kernel import adopt, has_bridge, surface_from_part, surface_to_part
+from .kernel import adopt, as_choice, has_bridge, surface_from_part, surface_to_part
 from .shapes import Cone, Cylinder, SphereZone, Torus
 
 BlendResult = namedtuple("BlendResult", "patches shell surface")
@@ -36,10 +36,8 @@ _METHODS = ("rho", "sigma", "mixed")
 
 
 def _check(shape, continuity, method):
-    if continuity not in ("C2", "C1"):
-        raise InputError(f"continuity must be 'C2' or 'C1', not {continuity!r}")
-    if method not in _METHODS:
-        raise InputError(f"method must be one of {_METHODS}, not {method!r}")
+    as_choice(continuity, "continuity", ("C2", "C1"))
+    as_choice(method, "method", _METHODS)
     if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
         raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
     check_cost(shape)
@@ -97,6 +95,7 @@ def freeform_knots(shape, method="rho", continuity="C2"):
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
     arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
     "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
+    as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
         from .blend_c1 import freeform_knots_c1
         return freeform_knots_c1(shape)
@@ -108,8 +107,7 @@ def _interface(shape, at):
     """'end' or 'start'; None chooses the end unless it is a pole (a dome)."""
     if at is None:
         return "start" if shape.pole_at("end") and not shape.pole_at("start") else "end"
-    if at not in ("end", "start"):
-        raise InputError(f"at must be 'end', 'start' or None, not {at!r}")
+    as_choice(at, "at", ("end", "start"))
     return at
 
 
@@ -137,12 +135,13 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     joined as edited: C2 along the interface and across the strip, the rows across the
     profile G2 (its .surface is then None). continuity "C1": Section 5, a biquadratic ring
     and a (4,2) double strip (blend_c1.py; method unused)."""
+    as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
         from .blend_c1 import blend_basic_shape_c1
 
+        _check(shape, continuity, method)
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
-        _check(shape, continuity, method)
         return blend_basic_shape_c1(shape, freeform, at=_interface(shape, at))
     _check(shape, continuity, method)
     if shape.edited:

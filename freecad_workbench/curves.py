@@ -4,8 +4,7 @@ Every function returns a FreeCAD ``Part.BSplineCurve``."""
 import numpy as np
 
 from . import _kernel
-from .errors import InputError
-from .kernel import adopt, as_points, has_bridge, to_part
+from .kernel import adopt, as_choice, as_flag, as_points, as_real, as_reals, has_bridge, to_part
 
 PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
 EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
@@ -13,8 +12,7 @@ _NO_PARAMETERS = np.zeros(0)  # read only by the kernel
 
 
 def _check_parametrization(parametrization):
-    if parametrization not in PARAMETRIZATIONS:
-        raise InputError(f"unknown parametrization {parametrization!r}: use one of {', '.join(PARAMETRIZATIONS)}")
+    as_choice(parametrization, "parametrization", PARAMETRIZATIONS)
 
 
 def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, epsilon_rule="case", parameters=None):
@@ -33,11 +31,10 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
     Raises InputError on bad input.
     """
     _check_parametrization(parametrization)
-    if epsilon_rule not in EPSILON_RULES:
-        raise InputError(f"unknown epsilon_rule {epsilon_rule!r}: use 'case' or 'additive'")
+    as_choice(epsilon_rule, "epsilon_rule", EPSILON_RULES)
     q = as_points(points)
-    t = _NO_PARAMETERS if parameters is None else np.asarray(parameters, dtype=float)
-    args = (q, bool(closed), parametrization, float(epsilon), EPSILON_RULES[epsilon_rule], t)
+    t = _NO_PARAMETERS if parameters is None else as_reals(parameters, "parameters")
+    args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False), EPSILON_RULES[epsilon_rule], t)
     if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
         return adopt(_kernel.csr_edge_capsule(*args)).Edge1.Curve
     return to_part(_kernel.csr_spline(*args))
@@ -46,18 +43,18 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
 def interpolate_classic(points, closed=False, parametrization="chordal"):
     """Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate), the baseline."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.classic_interpolation(as_points(points), bool(closed), parametrization))
+    return to_part(_kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
 def quasi_interpolant(points, closed=False, parametrization="chordal"):
     """The cubic quasi-interpolant, (-1, 8, -1)/6 for uniform parameters (Fig. 2e)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quasi_interpolant(as_points(points), bool(closed), parametrization))
+    return to_part(_kernel.quasi_interpolant(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
 def control_point_spline(points, closed=False):
     """The cubic B-spline that uses the data as control points (Fig. 2f, red)."""
-    return to_part(_kernel.control_point_spline(as_points(points), bool(closed)))
+    return to_part(_kernel.control_point_spline(as_points(points), as_flag(closed, "closed")))
 
 
 def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e-9):
@@ -65,4 +62,5 @@ def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e
     {q_i, m_i, q_(i+1)} whose handles m_i are the poles between the data points.
     Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quadratic_design(as_points(points), bool(closed), parametrization, float(epsilon)))
+    return to_part(_kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
+                                             as_real(epsilon, "epsilon", finite=False)))

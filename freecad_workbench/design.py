@@ -10,7 +10,7 @@ import numpy as np
 from . import _kernel
 from .basic import BasicCurve, from_edge
 from .errors import InputError
-from .kernel import from_part, to_part
+from .kernel import as_count, as_flag, as_real, from_part, to_part
 
 DesignResult = namedtuple("DesignResult", "curve joins ranges marks marks_added")
 DesignResult.__doc__ = (
@@ -23,6 +23,8 @@ DesignResult.__doc__ = (
 def piece_marks(curve, marks, tolerance=1e-9):
     """Marks as parameters in [0, 1]: numbers are taken as they are, points are located on
     the curve by eq. (4) / eq. (5) (InputError if off the curve beyond tolerance)."""
+    if isinstance(marks, (str, bytes)) or not hasattr(marks, "__iter__"):
+        raise InputError(f"marks must be a list of parameters or points, got {marks!r}")
     u = []
     for i, mark in enumerate(marks):
         if isinstance(mark, numbers.Real):
@@ -59,11 +61,13 @@ def design_spline(pieces, join_tolerance=1e-6, details=False):
     """
     if isinstance(pieces, tuple) and len(pieces) == 2 and not isinstance(pieces[0], tuple):
         pieces = [pieces]
+    if isinstance(pieces, (str, bytes)) or not hasattr(pieces, "__iter__"):
+        raise InputError(f"pieces must be a list of (basic curve, marks) pairs, got {pieces!r}")
     pieces = list(pieces)
     if not pieces:
         raise InputError("a design needs at least one piece")
-    if not join_tolerance >= 0:
-        raise InputError("join_tolerance must not be negative")
+    join_tolerance = as_real(join_tolerance, "join_tolerance", minimum=0)
+    details = as_flag(details, "details")
     polygons = []
     for index, item in enumerate(pieces):
         curve, marks = _piece(item, index)
@@ -71,7 +75,7 @@ def design_spline(pieces, join_tolerance=1e-6, details=False):
             polygons.append(_kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
         except InputError as exc:
             raise InputError(f"piece {index}: {exc}") from None
-    curve, joins, ranges = _kernel.merge_pieces(polygons, float(join_tolerance))
+    curve, joins, ranges = _kernel.merge_pieces(polygons, join_tolerance)
     part = to_part(curve)
     if not details:
         return part
@@ -102,6 +106,9 @@ def approximation_error(curve, marks, samples=40):
 
     The quintic pieces are evaluated for all pieces and samples at once (numpy), so the
     cost is one pass over marks x samples points, not a Python loop per point."""
+    if not isinstance(curve, BasicCurve):
+        raise InputError(f"curve must be a fw.basic curve, got {type(curve).__name__}")
+    samples = as_count(samples, "samples", 1, 10_000)
     u = _kernel.complete_marks(piece_marks(curve, marks))
     m = len(u) - 1
     quintic = np.asarray(_kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)

@@ -30,7 +30,7 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError, NoMonotoneSolution
-from .kernel import as_vector, to_part
+from .kernel import _require_bounded, as_choice, as_vector, to_part
 from .monotone import METHODS as PAPER_METHODS
 from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
 
@@ -163,6 +163,7 @@ def _edge_of(item, name):
 
 def _end_parameter(edge, end, name):
     first, last = edge.FirstParameter, edge.LastParameter
+    _require_bounded(first, last, type(edge.Curve).__name__)
     if isinstance(end, str):
         if end not in END_NAMES:
             raise InputError(f"{name} must be 'start', 'end', a vertex or a point, got {end!r}")
@@ -227,8 +228,7 @@ def monotone_curvature_spline(p0, t0, p1, t1, k0=None, k1=None, normal=None, met
     search, one short cubic, G1 only: the baselines (see monotone_curvature_solution).
     Raises NoMonotoneSolution (an InputError) with the reason when no monotone curve is found,
     InputError on bad input."""
-    if method not in METHODS and method != "fairest":
-        raise InputError(f"unknown method {method!r}: use one of {', '.join(METHODS)}")
+    as_choice(method, "method", METHODS + ("fairest",))
     if method != "fair":
         if k0 is not None or k1 is not None:
             raise InputError("the paper's Algorithm 2 is G1: end curvatures need method='fair'")
@@ -248,8 +248,7 @@ def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G2"):
     Returns (Part.BSplineCurve, FairBlendReport): where the ends admit no monotone curve the
     curve is the fairest found (still G1 or G2 to both edges) and the report says why.
     Raises InputError on bad input."""
-    if continuity not in CONTINUITIES:
-        raise InputError(f"unknown continuity {continuity!r}: use 'G1' or 'G2'")
+    as_choice(continuity, "continuity", CONTINUITIES)
     a = edge_end(edge_a, end_a, leaving=True, name="edge_a")
     b = edge_end(edge_b, end_b, leaving=False, name="edge_b")
     normal = _plane_normal(a, b)

@@ -1,10 +1,81 @@
 """The only module that talks to the compiled kernel: arrays in, Part geometry out."""
 import math
+import numbers
 
 import numpy as np
 
 from . import _kernel
 from .errors import InputError
+
+
+def as_real(value, name, finite=True, minimum=None, positive=False):
+    """One real number as a float; InputError naming the argument for anything else (None,
+    strings, sequences, complex), for NaN and infinity (finite=False passes them on, for the
+    kernel to name what they mean), below `minimum` or, when positive, not above 0."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.ndarray)):
+        raise InputError(f"{name} must be a number, got {value!r}")
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a number, got {value!r}") from None
+    if not finite:
+        return x
+    if not math.isfinite(x):
+        raise InputError(f"{name} must be finite, got {x}")
+    if minimum is not None and not x >= minimum:
+        raise InputError(f"{name} must not be negative, got {x:g}" if minimum == 0 else
+                         f"{name} must be at least {minimum:g}, got {x:g}")
+    if positive and not x > 0:
+        raise InputError(f"{name} must be positive, got {x:g}")
+    return x
+
+
+def as_count(value, name, minimum=0, maximum=None):
+    """A whole number in [minimum, maximum] as an int (integral floats are accepted); the
+    maximum bounds the work a count asks for, with a message instead of a long run."""
+    if isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{name} must be a whole number, got {value!r}")
+    if isinstance(value, numbers.Integral):
+        n = int(value)
+    elif isinstance(value, numbers.Real) and math.isfinite(value) and float(value).is_integer():
+        n = int(value)
+    else:
+        raise InputError(f"{name} must be a whole number, got {value!r}")
+    if n < minimum:
+        raise InputError(f"{name} must be at least {minimum}, got {n}")
+    if maximum is not None and n > maximum:
+        raise InputError(f"{name} = {n} is more than {maximum}: the work it asks for is unbounded")
+    return n
+
+
+def as_flag(value, name):
+    """A yes/no argument: bool (or 0 and 1); anything else (None, strings, 2) is an InputError."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, numbers.Integral) and value in (0, 1):
+        return bool(value)
+    raise InputError(f"{name} must be True or False, got {value!r}")
+
+
+def as_choice(value, name, choices):
+    """One of the strings `choices` (a tuple, or a dict whose keys are the choices)."""
+    if not isinstance(value, str) or value not in choices:
+        raise InputError(f"unknown {name} {value!r}: {name} must be one of {', '.join(map(repr, choices))}")
+    return value
+
+
+def as_reals(values, name):
+    """A 1-D float64 array of numbers (a list, tuple or array); InputError naming the argument
+    for strings, None, nested or ragged lists."""
+    if isinstance(values, (str, bytes)) or values is None:
+        raise InputError(f"{name} must be a list of numbers, got {values!r}")
+    try:
+        array = np.asarray(values, dtype=float)
+    except (TypeError, ValueError):
+        raise InputError(f"{name} must be a list of numbers, got {values!r}") from None
+    if array.ndim != 1:
+        raise InputError(f"{name} must be a flat list of numbers, got shape {array.shape}")
+    return np.ascontiguousarray(array)
 
 
 def as_points(points, name="points"):
@@ -17,6 +88,8 @@ def as_points(points, name="points"):
         array = points
     else:
         rows = []
+        if isinstance(points, (str, bytes)) or not hasattr(points, "__iter__"):
+            raise InputError(f"{name} must be a list of points, got {points!r}")
         for i, p in enumerate(points):
             if hasattr(p, "Point"):  # Part.Vertex
                 p = p.Point

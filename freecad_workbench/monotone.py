@@ -19,7 +19,7 @@ import numpy as np
 
 from . import _kernel
 from .errors import InputError
-from .kernel import as_points, as_vector, from_part, to_part
+from .kernel import as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
 
 # The paper's Algorithm 2: "paper" solves for the analytic centre of the family's admissible
 # set (called "fairest" before fair blends existed; still accepted), "grid" is the paper's
@@ -72,11 +72,10 @@ def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
     Raises NoMonotoneSolution (an InputError) with the reason when no curve of the family meets
     the end conditions (or, for "grid", when the grid finds none); InputError on bad input.
     fw.monotone_curvature_spline solves every G1 problem (see fair_blend)."""
-    if method not in _KERNEL_METHODS:
-        raise InputError(f"unknown method {method!r}: use 'paper' or 'grid'")
+    as_choice(method, "method", METHODS + ("fairest",))
     curve, reversed_, boundary, margin, iterations = _kernel.monotone_spline(
         as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"),
-        _KERNEL_METHODS[method], float(grid_step)
+        _KERNEL_METHODS[method], as_real(grid_step, "grid_step", positive=True)
     )
     return MonotoneSolution(to_part(curve), bool(reversed_), bool(boundary), float(margin), int(iterations))
 
@@ -87,7 +86,7 @@ def _design_inputs(first_vector, differences, knots, start):
     if first[2] != 0.0 or (diffs.shape[1] == 3 and np.any(diffs[:, 2] != 0.0)):
         raise InputError("Algorithm 1 designs in the XY plane: give vectors with z = 0")
     origin = np.zeros(2) if start is None else as_vector(start, "start")[:2]
-    t = np.zeros(0) if knots is None else np.asarray(knots, dtype=float).ravel()
+    t = np.zeros(0) if knots is None else as_reals(knots, "knots")
     return first[:2].copy(), np.ascontiguousarray(diffs[:, :2]), t, origin
 
 
@@ -186,7 +185,7 @@ def check_monotone_curvature(curve, rel_tol=1e-12):
     span; for non-periodic polynomial cubics also the paper's Lemmas 1-3 per segment.
     Raises InputError for a non-planar curve."""
     kernel_curve = from_part(curve)
-    return report_from_certificate(_kernel.certify_monotone(kernel_curve, float(rel_tol)), kernel_curve)
+    return report_from_certificate(_kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0)), kernel_curve)
 
 
 def report_from_certificate(cert, kernel_curve):
