@@ -85,6 +85,8 @@ def as_points(points, name="points"):
         if (points.dtype == np.float64 and points.ndim == 2 and points.shape[1] in (2, 3)
                 and points.flags.c_contiguous):
             return points  # already what the kernel reads (the common case: no numpy calls)
+        if points.dtype.kind not in "iuf":  # complex, bool, object, strings: not coordinates
+            raise InputError(f"{name} must be real numbers, got an array of {points.dtype}")
         array = points
     else:
         rows = []

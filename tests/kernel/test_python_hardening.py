@@ -210,3 +210,12 @@ def test_shape_partitions_are_bounded(make):
     """5000 angles each way (25 million patches) ran out of memory building the G2 structure."""
     with pytest.raises(fw.InputError, match="patches, more than"):
         make(np.linspace(0, 2 * math.pi, 5000))
+
+
+@pytest.mark.parametrize("points", [np.array([[0, 0], [1, 2j], [2, 4]]), np.array([[0, 0], [1, 1], [2, 0]], dtype=bool),
+                                    np.array([["0", "0"], ["1", "2"], ["2", "4"]])],
+                         ids=["complex", "bool", "strings"])
+def test_arrays_of_points_must_hold_real_numbers(points):
+    """numpy cast a complex array to its real part with only a warning: a silently other curve."""
+    with pytest.raises(fw.InputError, match="must be real numbers"):
+        fw.csr_spline(points)
