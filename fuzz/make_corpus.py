@@ -442,13 +442,33 @@ seed("fuzz_blend_surface", "edge_cone_steep",  # issue 13: a cone with slope 1e1
      tail(options(revolution(Enc().choice(0), 1, 4, 1.0, cylinder, size1=1e12))))
 
 
+# Reproducers of fixed findings (issue 13): fuzz/crashes/<harness>/<name> moved to
+# fuzz/corpus/<harness>/crash_<name>, kept byte for byte (they are libFuzzer's inputs, not
+# encoded here); each has its regression test in cpp/tests/test_hardening.cpp.
+CRASH_SEEDS = {}
+
+
+def kept_seeds(root):
+    """The crash seeds as committed: {harness: [(name, bytes)]}."""
+    out = {}
+    for harness, names in CRASH_SEEDS.items():
+        for name in names:
+            path = os.path.join(root, harness, "crash_" + name)
+            if not os.path.isfile(path):
+                sys.exit(f"corpus: {harness}/crash_{name} is missing (move it from fuzz/crashes/{harness}/{name})")
+            out.setdefault(harness, []).append(("crash_" + name, open(path, "rb").read()))
+    return out
+
+
 def main():
     root = os.path.join(HERE, "corpus")
+    kept = kept_seeds(root)
     if sys.argv[1:] == ["--check"]:  # the committed corpus is what this script writes
         stale = [f"{h}/{n}" for h, seeds in SEEDS.items() for n, data in seeds
                  if not os.path.isfile(os.path.join(root, h, n)) or open(os.path.join(root, h, n), "rb").read() != data]
         extra = sorted(set(f"{h}/{n}" for h in os.listdir(root) for n in os.listdir(os.path.join(root, h)))
-                       - set(f"{h}/{n}" for h, seeds in SEEDS.items() for n, _ in seeds))
+                       - set(f"{h}/{n}" for h, seeds in SEEDS.items() for n, _ in seeds)
+                       - set(f"{h}/{n}" for h, seeds in kept.items() for n, _ in seeds))
         if stale or extra:
             sys.exit(f"corpus: not what fuzz/make_corpus.py writes: {stale + extra}")
         print("corpus: up to date")
@@ -457,10 +477,10 @@ def main():
         folder = os.path.join(root, harness)
         shutil.rmtree(folder, ignore_errors=True)
         os.makedirs(folder)
-        for name, data in seeds:
+        for name, data in seeds + kept.get(harness, []):
             with open(os.path.join(folder, name), "wb") as f:
                 f.write(data)
-    total = sum(len(d) for s in SEEDS.values() for _, d in s)
+    total = sum(len(d) for s in SEEDS.values() for _, d in s) + sum(len(d) for s in kept.values() for _, d in s)
     print(f"corpus: {sum(len(s) for s in SEEDS.values())} seeds in {len(SEEDS)} harnesses, {total} bytes")
 
 

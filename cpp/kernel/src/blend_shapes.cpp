@@ -37,6 +37,7 @@ void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope) 
       throw InputError(os.str());
     }
   }
+  requireSeparateKnots(heights, "the profile's heights");
 }
 
 }  // namespace detail
@@ -88,6 +89,7 @@ G2CircleSpline g2Circle(const Eigen::VectorXd& theta) {
       throw InputError(os.str());
     }
   }
+  requireSeparateKnots(theta, "the circle partition's angles");
   const double span = theta[n] - theta[0];
   if (span > 2 * kPi + 1e-12) throw InputError("the partition spans more than a full turn (2 pi)");
   G2CircleSpline c;
@@ -127,7 +129,12 @@ void G2Surface::setControl(int I, int J, int r, int s, const Eigen::Vector3d& p,
     throw InputError("control point index out of range");
   }
   if (!(weight > 0) || !p.allFinite()) throw InputError("a control point needs finite coordinates and a positive weight");
-  point(I, J, r, s) << weight * p.transpose(), weight;
+  const Eigen::Vector3d weighted = weight * p;
+  if (!weighted.allFinite()) {
+    throw InputError("the control point's weight " + exactNumber(weight) +
+                     " is too large for its coordinates: the homogeneous point would overflow");
+  }
+  point(I, J, r, s) << weighted.transpose(), weight;
 }
 
 G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const Eigen::VectorXd& profileBeta,
@@ -163,6 +170,9 @@ G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const 
       }
     }
   }
+  // The boundary rule: sizes whose surface overflows are refused here, by name.
+  requireFinite(s.bezier, "the surface of revolution (its sizes are too large for double precision)",
+                "homogeneous control points");
   return s;
 }
 
@@ -230,6 +240,10 @@ G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eige
 G2Surface torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                 const Eigen::VectorXd& anglesV) {
   if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
+  if (!(r > 1e-12 * R)) {
+    throw InputError("the torus's tube radius " + exactNumber(r) + " is below the precision of its radius " +
+                     exactNumber(R) + " (less than 1e-12 of it)");
+  }
   const G2CircleSpline cu = g2Circle(anglesU), cv = g2Circle(anglesV);
   Homogeneous3 profile;
   circleProfile(cv, r, R, profile);  // (R + r cos v, r sin v)
