@@ -290,3 +290,42 @@ TEST(Hardening, FairBlendOfADenormalTangentIsFiniteOrRefused) {  // denormal_tan
   e.k1 = 0.00586;
   refusal([&] { expectValid(fairBlend(e).curve); });  // no other exception escapes
 }
+
+/// A slow input (fuzz_fair_blend g2_over_2_minutes, g2_36_seconds, g1_10_seconds: 10 s to
+/// minutes before the work budget): it now returns a finite curve or throws InputError (the
+/// budget's message), within a second in a release build (generous: sanitized builds are
+/// slower, so the bound is only checked where NDEBUG is defined).
+void expectFinishes(const BlendEnds& e) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::string message = refusal([&] { expectValid(fairBlend(e).curve); });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!message.empty()) EXPECT_NE(message.find("work budget"), std::string::npos) << message;
+#ifdef NDEBUG
+  EXPECT_LT(seconds, 1.0);
+#endif
+}
+
+TEST(Hardening, SlowG2BlendsFinishWithinTheWorkBudget) {
+  BlendEnds e;  // g2_over_2_minutes
+  e.p0 = Vector3d(0, -0.15625, 0);
+  e.p1 = Vector3d(14.323599031789975, -2.4127053871581357, 0);
+  e.k0 = 26.25;
+  e.k1 = -0.25;
+  expectFinishes(e);
+  e.p0 = Vector3d(28.25, 28.25, 0);  // g2_36_seconds
+  e.t0 = Vector3d(0.15425144988758405, -0.98803162409286183, 0);
+  e.p1 = Vector3d(32.885408226586534, 26.641685564051201, 0);
+  e.t1 = Vector3d(0.80640949391225458, -0.59135752986512435, 0);
+  e.k0 = 7.75;
+  e.k1 = 0;
+  expectFinishes(e);
+}
+
+TEST(Hardening, SlowG1BlendFinishesWithinTheWorkBudget) {  // g1_10_seconds
+  BlendEnds e;
+  e.p0 = Vector3d(10, -0.25, 0);
+  e.t0 = Vector3d(0.014648437063442545, -3.5762786509962977e-06, 0);
+  e.p1 = Vector3d(9.7500000074505806, -0.24993896484435632, 0);
+  e.t1 = Vector3d(0.0146484375, 0, 0);
+  expectFinishes(e);
+}

@@ -18,6 +18,7 @@
 
 #include "clothoid.hpp"
 #include "spiral.hpp"
+#include "work_budget.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/finite.hpp"
 #include "fairsplines/occt.hpp"
@@ -127,6 +128,7 @@ struct ReferenceCircle {
 
 constexpr int kMaxRounds = 12;   // refinement rounds
 constexpr int kMaxSpans = 400;   // spans at the most
+constexpr double kWorkBudget = 2e6;  // detail::WorkBudget units of one fairBlend
 
 /// End data in the normalized plane (chord from (0, 0) to (1, 0)).
 struct Ends2 {
@@ -314,6 +316,8 @@ std::pair<BSplineCurve, bool> certifiedFollow(const Curve& c, double turning, co
   std::vector<double> sigma = firstKnots(refine ? 4 : 8);
   BSplineCurve local;
   for (int round = 0; round < kMaxRounds && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
+    // Each round certifies every span: a span costs about as much as 64 Gauss panels.
+    detail::WorkBudget::spend(64.0 * static_cast<double>(sigma.size()));
     std::optional<BSplineCurve> candidate = followCurve(c, ref, e, sigma);
     std::vector<double> refined{sigma[0]};
     const int spans = static_cast<int>(sigma.size()) - 1;
@@ -354,6 +358,9 @@ FairBlend fairBlend(const BlendEnds& ends) {
   }
   if (g2 && !(std::isfinite(ends.k0) && std::isfinite(ends.k1))) throw InputError("the end curvatures must be finite");
   const Plane plane = planeOf(ends, g2);
+  // The solve's work budget (Gauss panels, clothoid pieces, certified spans): far above
+  // what the test sets' blends need, well under a second of work in a release build.
+  detail::WorkBudget budget(kWorkBudget, "the fair blend of these ends");
   // Normalized: chord from (0, 0) to (1, 0); lengths scale by 1 / r, curvatures by r.
   const double r = (ends.p1 - ends.p0).norm();
   const Vec2 a = plane.local(ends.t0).normalized(), b = plane.local(ends.t1).normalized();

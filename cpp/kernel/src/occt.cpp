@@ -67,6 +67,7 @@ Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options) 
   detail::csrSplineInto(q, options, t, scratch.poles.data());
   requireFinite(scratch.poles.data(), poles, 3, "the csr-spline of these points and parameters", "poles");
   requireFinite(t, knots, 1, "the csr-spline of these points and parameters", "knots");
+  requireSeparateKnots(Eigen::Map<const Eigen::VectorXd>(t, knots), "the csr-spline of these points and parameters");
   int* m = scratch.mults.data();
   std::fill(m, m + knots, 1);
   if (!closed) m[0] = m[knots - 1] = 4;

@@ -2,6 +2,7 @@
 #include "spiral.hpp"
 
 #include "clothoid.hpp"
+#include "work_budget.hpp"
 #include "fairsplines/errors.hpp"
 
 #include <algorithm>
@@ -61,6 +62,7 @@ Eigen::Vector2d Spiral::point(double s) const {
                      " times the chord): more than the solver's budget of " + num(0.5 * kMaxSpiralPanels) + " rad");
   }
   const int panels = std::max(1, static_cast<int>(wanted));
+  WorkBudget::spend(panels);
   const double h = s / panels;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (int p = 0; p < panels; ++p) {
@@ -120,6 +122,7 @@ Eigen::Vector2d ClothoidSpline::point(double s) const {
   // Piece by piece: each a clothoid arc, by the Fresnel moments.
   const int n = pieces();
   const double h = length / n, x = std::clamp(s / length, 0.0, 1.0) * n;
+  WorkBudget::spend(n);  // at most n Fresnel moments
   Eigen::Vector2d p = Eigen::Vector2d::Zero();
   double th = theta0;
   for (int i = 0; i < n && i < x; ++i) {
