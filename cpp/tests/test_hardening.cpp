@@ -329,3 +329,8 @@ TEST(Hardening, SlowG1BlendFinishesWithinTheWorkBudget) {  // g1_10_seconds
   e.t1 = Vector3d(0.0146484375, 0, 0);
   expectFinishes(e);
 }
+
+TEST(Hardening, SphereOfRadius1_7e308IsRefused) {  // sphere_radius_1.7e308_patch_nan
+  expectRefused([] { sphereZone(ShapeFrame{}, 1.7e308, vec({4.47998046875, 8.449951171875}), vec({-0.5, 0.5})); },
+                "is too large: the sphere's points would overflow");
+}

@@ -8,6 +8,7 @@
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
@@ -210,6 +211,11 @@ void lineProfile(const Eigen::VectorXd& heights, double radius0, double slope, H
 G2Surface sphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                      const Eigen::VectorXd& latitudes) {
   if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  // Its patches' affine poles reach a few radii out (the middle weights are cos(alpha/2)):
+  // beyond DBL_MAX / 64 they overflow.
+  if (!(radius < std::numeric_limits<double>::max() / 64.0)) {
+    throw InputError("radius " + exactNumber(radius) + " is too large: the sphere's points would overflow");
+  }
   for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
     if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) {
       throw InputError(angleList("latitudes must lie in [-pi/2, pi/2]; not so at index", static_cast<int>(j)));
