@@ -293,15 +293,15 @@ TEST(Hardening, FairBlendOfADenormalTangentIsFiniteOrRefused) {  // denormal_tan
 
 /// A slow input (fuzz_fair_blend g2_over_2_minutes, g2_36_seconds, g1_10_seconds: 10 s to
 /// minutes before the work budget): it now returns a finite curve or throws InputError (the
-/// budget's message), within a second in a release build (generous: sanitized builds are
-/// slower, so the bound is only checked where NDEBUG is defined).
+/// budget's message), in about half a second in a release build (bound 3 s: the machine may
+/// be loaded; sanitized builds are slower, so the bound is only checked where NDEBUG is defined).
 void expectFinishes(const BlendEnds& e) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::string message = refusal([&] { expectValid(fairBlend(e).curve); });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!message.empty()) EXPECT_NE(message.find("work budget"), std::string::npos) << message;
 #ifdef NDEBUG
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_LT(seconds, 3.0);
 #endif
 }
 

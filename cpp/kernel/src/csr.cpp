@@ -610,6 +610,7 @@ BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, 
   curve.mults = Eigen::VectorXi::Ones(t.size());
   if (!closed) curve.mults[0] = curve.mults[t.size() - 1] = 4;
   curve.knots = std::move(t);
+  requireValidCurve(curve, "the cubic fit of these points");
   return curve;
 }
 
