@@ -459,6 +459,7 @@ CRASH_SEEDS = {
         "spiral_theta1_1.8e308_d1_nan",
     ],
     "fuzz_blend_shapes": [
+        "sphere_radius_1.7e308_patch_nan",
         "circle_to_c2_beta_t_1e-300_inf",
         "cone_denormal_height_step_inf_beta",
         "cone_slope_-7e211_nan",
