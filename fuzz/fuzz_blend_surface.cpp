@@ -3,8 +3,8 @@
 // (rho, sigma or mixed circles; sextic in v or not; at the profile's end or start; the
 // naive Fig. 2a baseline), shape to shape (joinShapes), an edited control structure
 // (blendEdited), and the C1 constructions of Section 5 (blendC1, joinShapesC1); then the
-// complex as one surface, a patch in OCCT and now and then the sewn shell.
-#include <TopoDS_Shape.hxx>
+// complex as one surface, a patch in OCCT and now and then the shell (blendShell, no sewing).
+#include <TopoDS_Shell.hxx>
 
 #include "fairsplines/blend_c1.hpp"
 #include "fuzz_shapes.hpp"
@@ -143,8 +143,10 @@ int fuzzOne(FuzzInput& in) {
     }
   }
   if (in.byte() < 8 && complex.patches.size() <= 64) {
-    TopoDS_Shape shell;
-    if (guarded("sewnShell", [&] { shell = sewnShell(complex); }) && shell.IsNull()) fail("sewnShell", "a null shape");
+    BlendShell shell;  // the product's route: the shell built from the patches, no sewing
+    if (guarded("blendShell", [&] { shell = blendShell(complex); }) && shell.shell.IsNull()) {
+      fail("blendShell", "a null shape");
+    }
   }
   return 0;
 }

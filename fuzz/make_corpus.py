@@ -442,13 +442,106 @@ seed("fuzz_blend_surface", "edge_cone_steep",  # issue 13: a cone with slope 1e1
      tail(options(revolution(Enc().choice(0), 1, 4, 1.0, cylinder, size1=1e12))))
 
 
+# Reproducers of fixed findings (issue 13): fuzz/crashes/<harness>/<name> moved to
+# fuzz/corpus/<harness>/crash_<name>, kept byte for byte (they are libFuzzer's inputs, not
+# encoded here); regression tests in cpp/tests/test_hardening.cpp. The slow fair blends
+# (g2_over_2_minutes, g2_36_seconds, g1_10_seconds) are not seeds: within the work budget
+# they still take seconds in the sanitized build, near FUZZ_TIMEOUT; their tests remain.
+CRASH_SEEDS = {
+    "fuzz_basic_curves": [
+        "circle_radius_1.7e308_d1_nan",
+        "circle_sweep_-5e-304_parameter_of_nan",
+        "ellipse_origin_1e308_d1_nan",
+        "hyperbola_origin_z_1.8e308_d2_nan",
+        "involute_t_3e171_value_inf",
+        "parabola_t1_3e150_size_inf",
+        "rational_bezier_size_inf",
+        "spiral_theta1_1.8e308_d1_nan",
+    ],
+    "fuzz_blend_shapes": [
+        "sphere_radius_1.7e308_patch_nan",
+        "circle_to_c2_beta_t_1e-300_inf",
+        "cone_denormal_height_step_inf_beta",
+        "cone_slope_-7e211_nan",
+        "cylinder_heights_1e300_nan",
+        "g1_circle_arc_9e-312_inf_beta",
+        "g1_to_c1_beta_t_2e-236_nan",
+        "g2_circle_arc_1e-300_inf_beta",
+        "g2_to_c2_edited_piece_nan",
+        "set_control_weight_1.8e308_inf",
+        "sphere_zone_denormal_arc_inf_beta",
+        "sphere_zone_denormal_latitude_steps_inf_beta",
+        "torus_denormal_tube_and_angles_inf_beta",
+    ],
+    "fuzz_blend_surface": [
+        "blend_edited_construction_error_escapes",
+        "cone_height_1e12_naive_13s",
+        "cone_radius_1e12_30s",
+        "cone_slope_1e12_30s",
+        "join_torus_tube_1e-300_sewing_20s",
+        "single_surface_construction_error_escapes",
+        "single_surface_heights_1.1e-16_apart_nan",
+    ],
+    "fuzz_certificate": [
+        "certificate_out_of_range_periodic_degree3_2poles",
+        "derivative_polygons_inf_pole",
+        "derivative_polygons_no_poles_eigen_assert",
+        "normal_nan_periodic_pole_1.8e308",
+        "periodic_degree5_3poles_segv_in_occt_copy",
+        "span_curvature_nan_periodic_mults3",
+        "to_occt_empty_knots_null_reference",
+        "to_occt_no_pole_columns_null_reference",
+        "variation_nan_rational_periodic_huge_pole",
+        "variation_out_of_range_periodic_degree5_2poles",
+    ],
+    "fuzz_csr": [
+        "additive_rule_denormal_epsilon_nan",
+        "classic_interpolation_points_1e-159_nan",
+        "denormal_parameters_nan",
+        "parameters_1.4e-17_apart_knots_too_close",
+        "parameters_1e200_nan",
+    ],
+    "fuzz_design": [
+        "merge_circle_radius_1.7e308_inf_pole",
+        "merge_marks_4e-16_apart_knots_too_close",
+        "polygon_parametric_1e300_tiny_range_nan",
+        "polygon_spiral_a_-1.8e308_inf",
+        "quintics_circle_radius_1.7e308_nan",
+    ],
+    "fuzz_fair_blend": [
+        "denormal_tangent_out_of_range_escapes",
+        "g2_k0_denormal_nan_to_int",
+        "g2_k1_-1e300_float_to_int_overflow",
+    ],
+    "fuzz_monotone": [
+        "algorithm1_denormal_knot_too_close",
+        "algorithm1_differences_1.7e308_nan_pole",
+        "algorithm1_moved_inf",
+    ],
+}
+
+
+def kept_seeds(root):
+    """The crash seeds as committed: {harness: [(name, bytes)]}."""
+    out = {}
+    for harness, names in CRASH_SEEDS.items():
+        for name in names:
+            path = os.path.join(root, harness, "crash_" + name)
+            if not os.path.isfile(path):
+                sys.exit(f"corpus: {harness}/crash_{name} is missing (move it from fuzz/crashes/{harness}/{name})")
+            out.setdefault(harness, []).append(("crash_" + name, open(path, "rb").read()))
+    return out
+
+
 def main():
     root = os.path.join(HERE, "corpus")
+    kept = kept_seeds(root)
     if sys.argv[1:] == ["--check"]:  # the committed corpus is what this script writes
         stale = [f"{h}/{n}" for h, seeds in SEEDS.items() for n, data in seeds
                  if not os.path.isfile(os.path.join(root, h, n)) or open(os.path.join(root, h, n), "rb").read() != data]
         extra = sorted(set(f"{h}/{n}" for h in os.listdir(root) for n in os.listdir(os.path.join(root, h)))
-                       - set(f"{h}/{n}" for h, seeds in SEEDS.items() for n, _ in seeds))
+                       - set(f"{h}/{n}" for h, seeds in SEEDS.items() for n, _ in seeds)
+                       - set(f"{h}/{n}" for h, seeds in kept.items() for n, _ in seeds))
         if stale or extra:
             sys.exit(f"corpus: not what fuzz/make_corpus.py writes: {stale + extra}")
         print("corpus: up to date")
@@ -457,10 +550,10 @@ def main():
         folder = os.path.join(root, harness)
         shutil.rmtree(folder, ignore_errors=True)
         os.makedirs(folder)
-        for name, data in seeds:
+        for name, data in seeds + kept.get(harness, []):
             with open(os.path.join(folder, name), "wb") as f:
                 f.write(data)
-    total = sum(len(d) for s in SEEDS.values() for _, d in s)
+    total = sum(len(d) for s in SEEDS.values() for _, d in s) + sum(len(d) for s in kept.values() for _, d in s)
     print(f"corpus: {sum(len(s) for s in SEEDS.values())} seeds in {len(SEEDS)} harnesses, {total} bytes")
 
 

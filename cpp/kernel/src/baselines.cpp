@@ -8,6 +8,8 @@
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/finite.hpp"
+#include "fairsplines/occt.hpp"
 
 namespace fairsplines {
 
@@ -25,7 +27,9 @@ Handle(Geom_BSplineCurve) classicInterpolation(PointsRef q, Parametrization para
     GeomAPI_Interpolate interpolate(points, params, closed, 0.0);
     interpolate.Perform();
     if (!interpolate.IsDone()) throw InputError("classic interpolation failed (GeomAPI_Interpolate)");
-    return interpolate.Curve();
+    const Handle(Geom_BSplineCurve) curve = interpolate.Curve();
+    requireValidCurve(fromOcct(curve), "the classic interpolation of these points");
+    return curve;
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("classic interpolation failed: ") + failure.GetMessageString());
   }

@@ -31,6 +31,44 @@ void checkSweep(double sweep, const char* what) {
   }
 }
 
+/// The boundary rule for a basic curve: at 65 samples of [0, 1] its points and first two
+/// derivatives are finite (a size or range whose evaluation overflows is refused), and its
+/// extent is more than 1e-12 of its coordinates' size (below that the curve is a point in
+/// double precision: tangents and parameters would be 0/0). Relative, so that a curve of
+/// size 1e-300 near the origin is as good as one of size 1e300. A curve that does not move
+/// at all (extent 0) may be let through (`still`): the designs refuse it by that name.
+void requireEvaluable(const BasicCurve& curve, const char* what, bool still = false) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL), hi = -lo;
+  for (int j = 0; j <= 64; ++j) {
+    const double u = j / 64.0;
+    const Eigen::Vector3d p = curve.value(u), d1 = curve.d1(u), d2 = curve.d2(u);
+    if (!p.allFinite() || !d1.allFinite() || !d2.allFinite()) {
+      std::ostringstream msg;
+      msg << "the " << what << " is too large for double precision: its " << (!p.allFinite() ? "points" : "derivatives")
+          << " would overflow (at u = " << u << ")";
+      throw InputError(msg.str());
+    }
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double extent = (hi - lo).norm(), scale = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  if (!std::isfinite(extent)) {
+    throw InputError("the " + std::string(what) + " is too large for double precision: its extent overflows");
+  }
+  if (!(extent > 1e-12 * scale) && !(still && extent == 0.0)) {
+    std::ostringstream msg;
+    msg << "degenerate " << what << ": its extent " << extent << " is below the precision of its coordinates (" << scale
+        << "): too small, or too far from the origin, for double precision";
+    throw InputError(msg.str());
+  }
+}
+
+/// The boundary rule for a parameter found: finite, or the curve is refused.
+double requireFiniteParameter(double u, const Eigen::Vector3d& q) {
+  if (!std::isfinite(u)) throw InputError("the parameter of point " + describe(q) + " is not finite in double precision");
+  return u;
+}
+
 }  // namespace
 
 void Frame::check() const {
@@ -92,7 +130,7 @@ double BasicCurve::parameterOf(const Eigen::Vector3d& q, double tolerance) const
     msg << "point " << describe(q) << " is not on the curve: it is " << distance << " away";
     throw InputError(msg.str());
   }
-  return u;
+  return requireFiniteParameter(u, q);
 }
 
 RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous) : h_(std::move(homogeneous)) {
@@ -113,6 +151,7 @@ RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous) : h_(std
     hi = -hi;
   }
   if (lo <= 1e-12 * std::max(1.0, hi)) throw InputError("the weight function of the rational curve vanishes on [0, 1]");
+  requireEvaluable(*this, "rational curve");
 }
 
 void RationalBezierCurve::jets(double u, Eigen::Vector4d& f, Eigen::Vector4d& df, Eigen::Vector4d& d2f) const {
@@ -208,6 +247,13 @@ HomogeneousBezier checkedCircle(const Frame& frame, double radius, double start,
   frame.check();
   checkSweep(sweep, "circle arc");
   if (!(radius > 0.0) || !std::isfinite(radius)) throw InputError("degenerate circle arc: the radius must be positive");
+  // Its points and derivatives reach a few radii from the origin (the rest is checked by
+  // requireEvaluable on the samples).
+  if (!(radius + frame.origin.cwiseAbs().maxCoeff() < std::numeric_limits<double>::max() / 64.0)) {
+    std::ostringstream msg;
+    msg << "radius " << radius << " is too large: the curve's points would overflow";
+    throw InputError(msg.str());
+  }
   return ellipticQuadratic(frame, radius, radius, start, sweep);
 }
 
@@ -249,11 +295,13 @@ double CircleArc::parameterOf(const Eigen::Vector3d& q, double tolerance) const 
   // Eq. (4), with the case distinction that avoids dividing by zero.
   const double a2 = 0.5 * alpha;
   if (angle < kPi) {
-    return (std::sin(angle + a2) - std::sin(a2) - std::sin(angle)) /
-           (2.0 * (std::cos(a2) - 1.0) * (std::sin(a2) + std::sin(angle)));
+    return requireFiniteParameter((std::sin(angle + a2) - std::sin(a2) - std::sin(angle)) /
+                                      (2.0 * (std::cos(a2) - 1.0) * (std::sin(a2) + std::sin(angle))),
+                                  q);
   }
-  return (1.0 + std::cos(angle + a2) - std::cos(a2) - std::cos(angle)) /
-         (2.0 * (std::cos(a2) - 1.0) * (std::cos(a2) + std::cos(angle)));
+  return requireFiniteParameter((1.0 + std::cos(angle + a2) - std::cos(a2) - std::cos(angle)) /
+                                    (2.0 * (std::cos(a2) - 1.0) * (std::cos(a2) + std::cos(angle))),
+                                q);
 }
 
 std::unique_ptr<RationalBezierCurve> ellipseArc(const Frame& frame, double a, double b, double start, double sweep) {
@@ -302,6 +350,12 @@ ParametricCurve::ParametricCurve(Jet jet, double s0, double s1) : jet_(std::move
   if (!(s1 > s0) || !std::isfinite(s0) || !std::isfinite(s1)) {
     throw InputError("degenerate parametric curve: its parameter range must be increasing");
   }
+  if (!std::isfinite(s1 - s0)) {
+    std::ostringstream msg;
+    msg << "the parametric curve's range [" << s0 << ", " << s1 << "] is too large for double precision";
+    throw InputError(msg.str());
+  }
+  requireEvaluable(*this, "parametric curve", true);
 }
 
 Eigen::Vector3d ParametricCurve::value(double u) const {

@@ -8,6 +8,7 @@
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
@@ -37,6 +38,7 @@ void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope) 
       throw InputError(os.str());
     }
   }
+  requireSeparateKnots(heights, "the profile's heights");
 }
 
 }  // namespace detail
@@ -88,6 +90,7 @@ G2CircleSpline g2Circle(const Eigen::VectorXd& theta) {
       throw InputError(os.str());
     }
   }
+  requireSeparateKnots(theta, "the circle partition's angles");
   const double span = theta[n] - theta[0];
   if (span > 2 * kPi + 1e-12) throw InputError("the partition spans more than a full turn (2 pi)");
   G2CircleSpline c;
@@ -127,7 +130,12 @@ void G2Surface::setControl(int I, int J, int r, int s, const Eigen::Vector3d& p,
     throw InputError("control point index out of range");
   }
   if (!(weight > 0) || !p.allFinite()) throw InputError("a control point needs finite coordinates and a positive weight");
-  point(I, J, r, s) << weight * p.transpose(), weight;
+  const Eigen::Vector3d weighted = weight * p;
+  if (!weighted.allFinite()) {
+    throw InputError("the control point's weight " + exactNumber(weight) +
+                     " is too large for its coordinates: the homogeneous point would overflow");
+  }
+  point(I, J, r, s) << weighted.transpose(), weight;
 }
 
 G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const Eigen::VectorXd& profileBeta,
@@ -163,6 +171,9 @@ G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const 
       }
     }
   }
+  // The boundary rule: sizes whose surface overflows are refused here, by name.
+  requireFinite(s.bezier, "the surface of revolution (its sizes are too large for double precision)",
+                "homogeneous control points");
   return s;
 }
 
@@ -200,6 +211,11 @@ void lineProfile(const Eigen::VectorXd& heights, double radius0, double slope, H
 G2Surface sphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                      const Eigen::VectorXd& latitudes) {
   if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  // Its patches' affine poles reach a few radii out (the middle weights are cos(alpha/2)):
+  // beyond DBL_MAX / 64 they overflow.
+  if (!(radius < std::numeric_limits<double>::max() / 64.0)) {
+    throw InputError("radius " + exactNumber(radius) + " is too large: the sphere's points would overflow");
+  }
   for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
     if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) {
       throw InputError(angleList("latitudes must lie in [-pi/2, pi/2]; not so at index", static_cast<int>(j)));
@@ -230,6 +246,10 @@ G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eige
 G2Surface torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                 const Eigen::VectorXd& anglesV) {
   if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
+  if (!(r > 1e-12 * R)) {
+    throw InputError("the torus's tube radius " + exactNumber(r) + " is below the precision of its radius " +
+                     exactNumber(R) + " (less than 1e-12 of it)");
+  }
   const G2CircleSpline cu = g2Circle(anglesU), cv = g2Circle(anglesV);
   Homogeneous3 profile;
   circleProfile(cv, r, R, profile);  // (R + r cos v, r sin v)

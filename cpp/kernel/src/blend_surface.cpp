@@ -958,6 +958,9 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
   if (smoothness < 0) throw InputError("smoothness must be 0 or more");
   const int rows = complex.rowsBasic + complex.rowsTransition + complex.rowsFreeForm, K = complex.piecesU;
   if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1) throw InputError("the complex has no shared knots");
+  // Knots OpenCASCADE would call "too close" (arcs or heights a few ulps apart) are refused by name.
+  requireSeparateKnots(complex.knotsU, "the complex's u knots (around the axis)");
+  requireSeparateKnots(complex.knotsV, "the complex's v knots (along the profile)");
   int d = 0, e = 0;
   for (const TaggedPatch& p : complex.patches) {
     d = std::max(d, p.degreeU);
@@ -974,7 +977,9 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
       for (int b = 0; b <= e; ++b) {
         const auto h = p.bezier.row(a * (e + 1) + b);
         if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
-        poles.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
+        const Eigen::Vector3d point = h.head<3>().transpose() / h[3];
+        requireFinite(point, "the single surface of the complex", "poles");
+        poles.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, gp_Pnt(point.x(), point.y(), point.z()));
         weights.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, h[3]);
         size = std::max(size, h.cwiseAbs().maxCoeff());
       }
@@ -991,7 +996,12 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
   TColStd_Array1OfInteger mu(1, K + 1), mv(1, rows + 1);
   knots(complex.knotsU, d, ku, mu);
   knots(complex.knotsV, e, kv, mv);
-  Handle(Geom_BSplineSurface) s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
+  Handle(Geom_BSplineSurface) s;
+  try {
+    s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
+  } catch (const Standard_Failure& failure) {
+    throw InputError(std::string("OpenCASCADE rejected the single surface of the complex: ") + failure.GetMessageString());
+  }
   // C^smoothness where the multiplicities allow it: each interior knot down to degree - smoothness.
   for (int i = 2; i <= K; ++i) {
     if (!s->RemoveUKnot(i, std::max(d - smoothness, 0), tolerance * size)) {
@@ -1005,6 +1015,13 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
       std::ostringstream os;
       os << "the complex is not C" << smoothness << " across v knot " << j - 1 << " (basic rows only G2? use sexticInV)";
       throw InputError(os.str());
+    }
+  }
+  for (int i = 1; i <= s->NbUPoles(); ++i) {
+    for (int j = 1; j <= s->NbVPoles(); ++j) {
+      const gp_Pnt& p = s->Pole(i, j);
+      requireFinite(Eigen::Vector4d(p.X(), p.Y(), p.Z(), s->Weight(i, j)), "the single surface of the complex",
+                    "poles after the knot removal");
     }
   }
   return s;

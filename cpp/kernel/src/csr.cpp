@@ -1,6 +1,7 @@
 // csr-spline, Section 4, eq. (6), and quadratic design, Section 7, eq. (12), of
 // Karčiauskas & Peters, "Curvature-sensitive splines and design with basic curves".
 #include "fairsplines/csr.hpp"
+#include "fairsplines/finite.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -609,6 +610,7 @@ BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, 
   curve.mults = Eigen::VectorXi::Ones(t.size());
   if (!closed) curve.mults[0] = curve.mults[t.size() - 1] = 4;
   curve.knots = std::move(t);
+  requireValidCurve(curve, "the cubic fit of these points");
   return curve;
 }
 
@@ -712,6 +714,7 @@ BSplineCurve csrSpline(PointsRef q, const CsrOptions& options) {
   detail::csrSplineInto(q, options, curve.knots.data(), curve.poles.data());
   curve.mults = Eigen::VectorXi::Ones(knots);
   if (!options.closed) curve.mults[0] = curve.mults[knots - 1] = 4;
+  requireValidCurve(curve, "the csr-spline of these points and parameters");
   return curve;
 }
 
@@ -736,6 +739,7 @@ BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool 
   curve.knots = t;
   curve.mults = Eigen::VectorXi::Constant(t.size(), 2);
   curve.mults[0] = curve.mults[t.size() - 1] = 3;
+  requireValidCurve(curve, "the quadratic design of these points");
   return curve;
 }
 

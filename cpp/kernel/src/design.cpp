@@ -1,6 +1,7 @@
 // Design with basic curves, Sections 5 and 6 and Fig. 9 of Karčiauskas & Peters,
 // "Curvature-sensitive splines and design with basic curves".
 #include "fairsplines/design.hpp"
+#include "fairsplines/finite.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,15 @@ Eigen::RowVector4d blossom(const HomogeneousBezier& b, double x, double y, doubl
 }
 
 Eigen::Vector3d affine(const Eigen::RowVector4d& h) { return h.head<3>().transpose() / h[3]; }
+
+/// The boundary rule for a piece's polygon: every homogeneous point finite.
+PiecePolygon requireFinitePolygon(PiecePolygon p) {
+  const std::string what = "the piece's polygon";
+  requireFinite(p.start, what, "start points");
+  requireFinite(p.inner, what, "control points");
+  requireFinite(p.end, what, "end points");
+  return p;
+}
 
 }  // namespace
 
@@ -46,7 +56,9 @@ Eigen::VectorXd completeMarks(const Eigen::VectorXd& marks) {
     u.push_back(v);
   }
   u.push_back(1.0);
-  return Eigen::Map<Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+  Eigen::VectorXd complete = Eigen::Map<Eigen::VectorXd>(u.data(), static_cast<Eigen::Index>(u.size()));
+  requireSeparateKnots(complete, "the marks (with 0 and 1)");  // they become knots of the design
+  return complete;
 }
 
 PiecePolygon exactPolygon(const HomogeneousBezier& cubic, const Eigen::VectorXd& marks) {
@@ -145,7 +157,7 @@ PiecePolygon polygonFromJets(const PointMatrix& f, const PointMatrix& df, const 
 }
 
 PiecePolygon piecePolygon(const BasicCurve& curve, const Eigen::VectorXd& marks) {
-  if (const auto cubic = curve.homogeneousCubic()) return exactPolygon(*cubic, marks);
+  if (const auto cubic = curve.homogeneousCubic()) return requireFinitePolygon(exactPolygon(*cubic, marks));
   const Eigen::VectorXd u = completeMarks(marks);
   PointMatrix f(u.size(), 3), df(u.size(), 3), d2f(u.size(), 3);
   for (Eigen::Index i = 0; i < u.size(); ++i) {
@@ -153,7 +165,11 @@ PiecePolygon piecePolygon(const BasicCurve& curve, const Eigen::VectorXd& marks)
     df.row(i) = curve.d1(u[i]).transpose();
     d2f.row(i) = curve.d2(u[i]).transpose();
   }
-  return polygonFromJets(f, df, d2f, u);
+  const std::string what = "the piece's curve at the marks";
+  requireFinite(f, what, "points");
+  requireFinite(df, what, "first derivatives");
+  requireFinite(d2f, what, "second derivatives");
+  return requireFinitePolygon(polygonFromJets(f, df, d2f, u));
 }
 
 PointMatrix quinticPieces(const BasicCurve& curve, const Eigen::VectorXd& marks) {
@@ -173,6 +189,7 @@ PointMatrix quinticPieces(const BasicCurve& curve, const Eigen::VectorXd& marks)
     b.row(6 * i + 4) = f1 - d1 / 5.0;
     b.row(6 * i + 5) = f1;
   }
+  requireFinite(b, "the quintic pieces of the curve", "Bezier points");
   return b;
 }
 
@@ -265,6 +282,7 @@ Design mergePieces(const std::vector<PiecePolygon>& pieces, double joinTolerance
   c.knots = Eigen::Map<Eigen::VectorXd>(knots.data(), static_cast<Eigen::Index>(knots.size()));
   c.mults = Eigen::VectorXi::Ones(c.knots.size());
   c.mults[0] = c.mults[c.knots.size() - 1] = 4;
+  requireValidCurve(c, "the merged design");
   return design;
 }
 

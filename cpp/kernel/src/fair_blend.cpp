@@ -18,7 +18,9 @@
 
 #include "clothoid.hpp"
 #include "spiral.hpp"
+#include "work_budget.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/finite.hpp"
 #include "fairsplines/occt.hpp"
 
 namespace fairsplines {
@@ -126,6 +128,7 @@ struct ReferenceCircle {
 
 constexpr int kMaxRounds = 12;   // refinement rounds
 constexpr int kMaxSpans = 400;   // spans at the most
+constexpr double kWorkBudget = 2e6;  // detail::WorkBudget units of one fairBlend
 
 /// End data in the normalized plane (chord from (0, 0) to (1, 0)).
 struct Ends2 {
@@ -158,6 +161,11 @@ std::optional<BSplineCurve> followCurve(const Curve& c, const ReferenceCircle& r
   for (int i = 0; i < K; ++i) u[i] = ref.parameterAt(sigma[i]);
   u[0] = 0.0;
   u[K - 1] = 1.0;
+  // Knots that do not separate (a reference circle degenerate in double precision, e.g. for
+  // a denormal tangent angle) leave no basis to evaluate: no cubic on them.
+  for (int i = 1; i < K; ++i) {
+    if (!(u[i] - u[i - 1] > kRelativeKnotGap)) return std::nullopt;
+  }
   const int n = K + 2;  // poles: spans + 3
   TColStd_Array1OfReal knots(1, n + 4);
   for (int i = 0; i < n + 4; ++i) knots(i + 1) = u[std::clamp(i - 3, 0, K - 1)];
@@ -308,6 +316,8 @@ std::pair<BSplineCurve, bool> certifiedFollow(const Curve& c, double turning, co
   std::vector<double> sigma = firstKnots(refine ? 4 : 8);
   BSplineCurve local;
   for (int round = 0; round < kMaxRounds && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
+    // Each round certifies every span: a span costs about as much as 64 Gauss panels.
+    detail::WorkBudget::spend(64.0 * static_cast<double>(sigma.size()));
     std::optional<BSplineCurve> candidate = followCurve(c, ref, e, sigma);
     std::vector<double> refined{sigma[0]};
     const int spans = static_cast<int>(sigma.size()) - 1;
@@ -348,6 +358,9 @@ FairBlend fairBlend(const BlendEnds& ends) {
   }
   if (g2 && !(std::isfinite(ends.k0) && std::isfinite(ends.k1))) throw InputError("the end curvatures must be finite");
   const Plane plane = planeOf(ends, g2);
+  // The solve's work budget (Gauss panels, clothoid pieces, certified spans): far above
+  // what the test sets' blends need, well under a second of work in a release build.
+  detail::WorkBudget budget(kWorkBudget, "the fair blend of these ends");
   // Normalized: chord from (0, 0) to (1, 0); lengths scale by 1 / r, curvatures by r.
   const double r = (ends.p1 - ends.p0).norm();
   const Vec2 a = plane.local(ends.t0).normalized(), b = plane.local(ends.t1).normalized();
@@ -374,7 +387,20 @@ FairBlend fairBlend(const BlendEnds& ends) {
         << local.knots.size() - 1 << " C2 spans";
     if (!proved) why << ", not all proved monotone";
   } else {
-    const double k0 = ends.k0 * r, k1 = ends.k1 * r;
+    // The curvatures in chord units: beyond kMaxChordCurvature the radius is below a
+    // millionth of the chord (no blend to speak of); below kZeroChordCurvature the end is
+    // straight, as far as double precision can tell (a denormal curvature would give 0/0).
+    constexpr double kMaxChordCurvature = 1e6, kZeroChordCurvature = 1e-15;
+    auto chordCurvature = [&](double k, const char* name) {
+      const double kr = k * r;
+      if (!(std::abs(kr) <= kMaxChordCurvature)) {
+        throw InputError(std::string("the end curvature ") + name + " = " + exactNumber(k) +
+                         " is too large for the chord " + exactNumber(r) +
+                         ": its radius would be below a millionth of the chord");
+      }
+      return std::abs(kr) < kZeroChordCurvature ? 0.0 : kr;
+    };
+    const double k0 = chordCurvature(ends.k0, "k0"), k1 = chordCurvature(ends.k1, "k1");
     const Ends2 e{Vec2::Zero(), Vec2::UnitX(), a, b, k0, k1};
     const detail::SpiralSolution sol = detail::solveG2Spiral(theta0, k0, theta1, k1);
     const CurvatureTrend wanted = k1 > k0 ? CurvatureTrend::Increasing : CurvatureTrend::Decreasing;

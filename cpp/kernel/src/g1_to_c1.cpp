@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "fairsplines/finite.hpp"
 #include "fairsplines/errors.hpp"
 
 namespace fairsplines {
@@ -59,6 +60,12 @@ C1QuarticSpline g1ToC1(const PointMatrix& quadratics, const Eigen::VectorXd& bet
   const int n = static_cast<int>(quadratics.rows() / 3);
   if (n < 1 || quadratics.rows() != 3 * n) throw InputError("a G1 quadratic spline needs 3 Bézier points per piece");
   if (beta.size() != n || betaT.size() != n) throw InputError("one scalar per piece (index i: join of pieces i-1 and i)");
+  requireFinite(quadratics, "the G1 quadratic spline", "Bezier points");
+  {
+    const int first = closed ? 0 : 1;  // an open spline's scalars 0 are not used
+    requireModerateScalars(beta.tail(n - first), "the G1 scalar beta at join");
+    requireModerateScalars(betaT.tail(n - first), "the C1 scalar betaT at join");
+  }
   const int wc = static_cast<int>(quadratics.cols()) - 1;
   Eigen::VectorXd w(n);
   for (int i = 0; i < n; ++i) {
@@ -86,6 +93,7 @@ C1QuarticSpline g1ToC1(const PointMatrix& quadratics, const Eigen::VectorXd& bet
     out.bezier.middleRows(10 * i + 5, 5) = composeQuadratic2(q, eta[1]);
     out.beta[2 * i] = hasPrev ? betaT[i] : 1.0;
   }
+  requireFinite(out.bezier, "the C1 quartic spline", "Bezier points");
   return out;
 }
 
@@ -103,6 +111,7 @@ void g1Circle(const Eigen::VectorXd& theta, PointMatrix& quadratics, Eigen::Vect
       throw InputError("a rational quadratic arc must open less than pi (its weight cos(alpha/2) must be positive)");
     }
   }
+  requireSeparateKnots(theta, "the circle partition's angles");
   closed = std::abs(theta[n] - theta[0] - 2 * pi) <= 1e-12;
   quadratics.resize(3 * n, 3);
   beta = Eigen::VectorXd::Ones(n);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "fairsplines/finite.hpp"
 #include "fairsplines/errors.hpp"
 
 namespace fairsplines {
@@ -361,6 +362,8 @@ C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vec
   const int n = static_cast<int>(cubicPieces.rows() / 4);
   if (n < 1 || cubicPieces.rows() != 4 * n) throw InputError("a G2 cubic spline needs 4 Bézier points per piece");
   if (static_cast<int>(maps.size()) != n || betaT.size() != n) throw InputError("one map list and one scalar per piece");
+  requireFinite(cubicPieces, "the G2 cubic spline", "Bezier points");
+  requireModerateScalars(betaT.tail(closed ? n : n - 1), "the C2 scalar betaT at join");
   C2SexticSpline out;
   out.closed = closed;
   int total = 0;
@@ -391,6 +394,7 @@ C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vec
     }
   }
   if (!closed) out.beta[0] = 1.0;
+  requireFinite(out.bezier, "the C2 sextic spline", "Bezier points");
   return out;
 }
 
@@ -537,6 +541,7 @@ CircleMaps circleMaps(const G2CircleSpline& circle, CircleReparam method, Eigen:
   for (int i = 0; i < n; ++i) {
     if (!(betaT[i] > 0) || !std::isfinite(betaT[i])) throw InputError("continuity scalars must be positive");
   }
+  requireModerateScalars(betaT.tail(circle.closed ? n : n - 1), "the continuity scalar betaT of arc");
   if (!circle.closed) betaT[0] = 1.0;
   if (method != CircleReparam::Mixed) return circleMapsWith(circle, std::vector<CircleReparam>(n, method), betaT);
   // Mixed: rho on the uniform or symmetric runs, unless new scalars betaT far from the

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "fairsplines/analysis.hpp"
+#include "fairsplines/finite.hpp"
 #include "fairsplines/monotone_detail.hpp"
 #include "fairsplines/occt.hpp"
 
@@ -480,11 +481,7 @@ void planeBasis(const Vec3& n, Vec3& e1, Vec3& e2) {
 }
 
 PlanarCurve planarCurve(const BSplineCurve& input) {
-  if (input.poles.rows() < 2 || input.degree < 1) throw InputError("a curve needs at least 2 poles and degree 1");
-  if (!input.poles.allFinite()) throw InputError("the curve has non-finite poles");
-  if (input.isRational() && !(input.weights.minCoeff() > 0.0)) {
-    throw InputError("the curve has non-positive weights");
-  }
+  requireValidCurve(input, "the curve");
   BSplineCurve curve = input;
   Handle(Geom_BSplineCurve) occt = toOcct(input);
   PlanarCurve out;
@@ -1004,6 +1001,7 @@ Eigen::VectorXd flatKnots(const BSplineCurve& curve) {
 DerivativePolygons derivativePolygons(const BSplineCurve& cubic) {
   if (cubic.degree != 3) throw InputError("eqs. (3) and (5) are for cubic B-splines, got degree " + std::to_string(cubic.degree));
   if (cubic.isRational()) throw InputError("eqs. (3) and (5) are for non-rational B-splines");
+  requireValidCurve(cubic, "the cubic");
   const Eigen::VectorXd t = flatKnots(cubic);
   const Eigen::Index n = cubic.poles.rows();
   DerivativePolygons out;
@@ -1216,6 +1214,11 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
   out.curve.poles = std::move(poles);
   out.curve.knots = Eigen::Map<Eigen::VectorXd>(knots.data(), knots.size());
   out.curve.mults = Eigen::Map<Eigen::VectorXi>(mults.data(), mults.size());
+  // The boundary rule: differences or knots whose design overflows, or knots too close
+  // for OpenCASCADE, are refused by name.
+  requireFinite(out.differences, "Algorithm 1's design", "differences");
+  requireFinite(out.moved, "Algorithm 1's design", "moves");
+  requireValidCurve(out.curve, "Algorithm 1's design");
   return out;
 }
 
@@ -1291,7 +1294,19 @@ MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::V
 
 MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, double relTol) {
   if (!(relTol >= 0.0)) throw InputError("the tolerance must be >= 0");
-  return certifyPlanar(planarCurve(curve), relTol);
+  const MonotonicityCertificate cert = certifyPlanar(planarCurve(curve), relTol);
+  // The boundary rule: no NaN curvature leaves; a curve whose curvatures overflow (or
+  // vanish into 0/0) in double precision is refused by name.
+  const char* overflow = "the curve's curvature is not finite in double precision: its poles are too large, too small or too close together";
+  requireFinite(cert.normal, "the curve", "plane normal");
+  if (!std::isfinite(cert.kappaStart) || !std::isfinite(cert.kappaEnd)) throw InputError(overflow);
+  for (const SpanCertificate& span : cert.spans) {
+    if (!std::isfinite(span.kappa0) || !std::isfinite(span.kappa1) || !std::isfinite(span.kappaAt) ||
+        !std::isfinite(span.u0) || !std::isfinite(span.u1) || !std::isfinite(span.at)) {
+      throw InputError(overflow);
+    }
+  }
+  return cert;
 }
 
 double curvatureVariation(const BSplineCurve& curve) {
@@ -1313,7 +1328,11 @@ double curvatureVariation(const BSplineCurve& curve) {
       energy += w * dkappa * dkappa / ds;
     }
   }
-  return energy * length * length * length;
+  const double variation = energy * length * length * length;
+  if (!std::isfinite(variation)) {
+    throw InputError("the curve's curvature variation is not finite in double precision: its poles are too large, too small or too close together");
+  }
+  return variation;
 }
 
 }  // namespace fairsplines

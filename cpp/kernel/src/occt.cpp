@@ -21,17 +21,8 @@ Handle(Geom_BSplineCurve) toOcct(const BSplineCurve& curve) {
   const int n = static_cast<int>(curve.poles.rows());
   const int k = static_cast<int>(curve.knots.size());
   // The arrays below borrow the kernel's memory: check the layout first (no null data,
-  // rows of 2 or 3 coordinates), then that every number is finite.
-  if (curve.dimension() != 2 && curve.dimension() != 3) {
-    throw InputError("a B-spline's poles are rows of 2 or 3 coordinates, not " + std::to_string(curve.dimension()));
-  }
-  if (n < 2) throw InputError("a B-spline needs at least 2 poles, got " + std::to_string(n));
-  if (k < 2) throw InputError("a B-spline needs at least 2 knots, got " + std::to_string(k));
-  if (curve.mults.size() != k) throw InputError("a B-spline needs one multiplicity per knot");
-  if (curve.isRational() && curve.weights.size() != n) throw InputError("a rational B-spline needs one weight per pole");
-  requireFinite(curve.poles, "the B-spline curve", "poles");
-  requireFinite(curve.knots, "the B-spline curve", "knots");
-  requireFinite(curve.weights, "the B-spline curve", "weights");
+  // rows of 2 or 3 coordinates), then that every number is finite and the knots separate.
+  requireValidCurve(curve, "the B-spline curve");
   // Row-major (n x 3) doubles have gp_Pnt's layout: OCCT's arrays can borrow the
   // kernel's memory (NCollection_Array1's non-owning constructor); the curve copies it.
   static_assert(sizeof(gp_Pnt) == 3 * sizeof(double), "gp_Pnt is three doubles");
@@ -76,6 +67,7 @@ Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options) 
   detail::csrSplineInto(q, options, t, scratch.poles.data());
   requireFinite(scratch.poles.data(), poles, 3, "the csr-spline of these points and parameters", "poles");
   requireFinite(t, knots, 1, "the csr-spline of these points and parameters", "knots");
+  requireSeparateKnots(Eigen::Map<const Eigen::VectorXd>(t, knots), "the csr-spline of these points and parameters");
   int* m = scratch.mults.data();
   std::fill(m, m + knots, 1);
   if (!closed) m[0] = m[knots - 1] = 4;

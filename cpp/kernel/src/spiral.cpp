@@ -2,6 +2,8 @@
 #include "spiral.hpp"
 
 #include "clothoid.hpp"
+#include "work_budget.hpp"
+#include "fairsplines/errors.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,6 +14,10 @@
 
 namespace fairsplines::detail {
 namespace {
+
+/// Spiral::point's budget of Gauss panels (each turning by at most 0.5 rad): far beyond
+/// the turning of any spiral the G2 solver tries, well within int.
+constexpr double kMaxSpiralPanels = 1 << 20;
 
 std::string num(double v) {
   std::ostringstream out;
@@ -47,7 +53,17 @@ Eigen::Vector2d Spiral::point(double s) const {
   // Composite 8-point Gauss in panels over which the tangent turns by at most 0.5 rad.
   const double rate = length * (std::abs(k0) + std::abs(k1 - k0) + 0.25 * (std::abs(a) + std::abs(b)));
   const double tau1 = s / length;
-  const int panels = std::max(1, static_cast<int>(std::ceil(rate * std::abs(tau1) / 0.5)));
+  // The work budget: at most kMaxSpiralPanels panels (a tangent turning by more than
+  // kMaxSpiralPanels / 2 rad is no blend); a NaN or overflowing count is refused before the
+  // cast to int, which would be undefined.
+  const double wanted = std::ceil(rate * std::abs(tau1) / 0.5);
+  if (!(wanted <= kMaxSpiralPanels)) {
+    throw InputError("the spiral's tangent turns by " + num(rate * std::abs(tau1)) +
+                     " rad (curvatures k0 = " + num(k0) + ", k1 = " + num(k1) +
+                     " times the chord): more than the solver's budget of " + num(0.5 * kMaxSpiralPanels) + " rad");
+  }
+  const int panels = std::max(1, static_cast<int>(wanted));
+  WorkBudget::spend(panels);
   const double h = s / panels;
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (int p = 0; p < panels; ++p) {
@@ -107,6 +123,7 @@ Eigen::Vector2d ClothoidSpline::point(double s) const {
   // Piece by piece: each a clothoid arc, by the Fresnel moments.
   const int n = pieces();
   const double h = length / n, x = std::clamp(s / length, 0.0, 1.0) * n;
+  WorkBudget::spend(n);  // at most n Fresnel moments
   Eigen::Vector2d p = Eigen::Vector2d::Zero();
   double th = theta0;
   for (int i = 0; i < n && i < x; ++i) {

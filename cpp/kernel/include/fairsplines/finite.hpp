@@ -5,9 +5,13 @@
 // would still call valid.
 #pragma once
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <string>
 
 #include "fairsplines/errors.hpp"
+#include "fairsplines/types.hpp"
 
 namespace fairsplines {
 
@@ -41,6 +45,88 @@ inline void requireFinite(const double* data, Eigen::Index count, int width, con
                           const char* part) {
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   requireFinite(Eigen::Map<const Rows>(data, count, width), what, part);
+}
+
+/// Continuity scalars (beta, betaT: ratios of parameter speeds) are dimensionless: outside
+/// [1 / kMaxScalarRatio, kMaxScalarRatio] the reparameterizations they define degenerate in
+/// double precision (0/0 or overflow in the composed Bezier points).
+constexpr double kMaxScalarRatio = 1e12;
+
+/// A number for a message: all 17 digits, so that two close knots print differently.
+inline std::string exactNumber(double v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << v;
+  return out.str();
+}
+
+/// Knots closer than this fraction of the knot range (or than a few units in the last place
+/// of their size) are "too close": OpenCASCADE refuses those at one ulp, and spans that
+/// short carry no digits of their own. Relative, so that 1e-300 and 1e300 are alike.
+constexpr double kRelativeKnotGap = 1e-12;
+
+/// Throw InputError unless the distinct knots increase by more than kRelativeKnotGap of
+/// their range and by more than 8 ulps of their size, naming the first pair too close.
+inline void requireSeparateKnots(const Eigen::VectorXd& knots, const std::string& what) {
+  requireFinite(knots, what, "knots");
+  if (knots.size() < 2) return;
+  const double range = knots[knots.size() - 1] - knots[0];
+  for (Eigen::Index i = 1; i < knots.size(); ++i) {
+    const double a = knots[i - 1], b = knots[i], size = std::max(std::abs(a), std::abs(b));
+    const double ulp = std::nextafter(size, HUGE_VAL) - size;
+    const double gap = b - a;
+    if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp)) {
+      throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" +
+                       exactNumber(a) + " and " + exactNumber(b) +
+                       ") are too close together (or not increasing): their span is below the precision of the knots");
+    }
+  }
+}
+
+/// Throw InputError unless the curve is one OpenCASCADE accepts and can work with: rows of 2
+/// or 3 finite coordinates, at least 2 poles, degree >= 1, one multiplicity per knot (each
+/// from 1 to degree + 1), separate finite knots, positive finite weights, and, if periodic,
+/// at least as many poles as its degree: OCCT accepts fewer, then reads out of bounds
+/// (Geom_BSplineCurve::Copy, SetNotPeriodic). A periodic cubic of 3 poles (the closed
+/// csr-spline of 3 points) is fine.
+inline void requireValidCurve(const BSplineCurve& curve, const std::string& what) {
+  const Eigen::Index n = curve.poles.rows(), k = curve.knots.size();
+  if (curve.dimension() != 2 && curve.dimension() != 3) {
+    throw InputError(what + ": its poles are rows of 2 or 3 coordinates, not " + std::to_string(curve.dimension()));
+  }
+  if (n < 2) throw InputError(what + ": a B-spline needs at least 2 poles, got " + std::to_string(n));
+  if (curve.degree < 1) throw InputError(what + ": the degree must be >= 1, got " + std::to_string(curve.degree));
+  if (k < 2) throw InputError(what + ": a B-spline needs at least 2 knots, got " + std::to_string(k));
+  if (curve.mults.size() != k) throw InputError(what + ": a B-spline needs one multiplicity per knot");
+  if (curve.isRational() && curve.weights.size() != n) {
+    throw InputError(what + ": a rational B-spline needs one weight per pole");
+  }
+  if (curve.periodic && curve.degree > n) {
+    throw InputError(what + ": a periodic B-spline of degree " + std::to_string(curve.degree) + " needs at least " +
+                     std::to_string(curve.degree) + " poles, got " + std::to_string(n));
+  }
+  for (Eigen::Index i = 0; i < k; ++i) {
+    if (curve.mults[i] < 1 || curve.mults[i] > curve.degree + 1) {
+      throw InputError(what + ": multiplicity " + std::to_string(i) + " is " + std::to_string(curve.mults[i]) +
+                       ", not from 1 to degree + 1 = " + std::to_string(curve.degree + 1));
+    }
+  }
+  requireFinite(curve.poles, what, "poles");
+  requireFinite(curve.weights, what, "weights");
+  if (curve.isRational() && !(curve.weights.minCoeff() > 0.0)) throw InputError(what + ": its weights must be > 0");
+  requireSeparateKnots(curve.knots, what);
+}
+
+/// Throw InputError unless every scalar is finite and within [1 / kMaxScalarRatio,
+/// kMaxScalarRatio], naming "<what> <i>".
+inline void requireModerateScalars(const Eigen::VectorXd& scalars, const std::string& what) {
+  for (Eigen::Index i = 0; i < scalars.size(); ++i) {
+    const double v = scalars[i];
+    if (!(v >= 1.0 / kMaxScalarRatio && v <= kMaxScalarRatio)) {
+      throw InputError(what + " " + std::to_string(i) + " is " + exactNumber(v) + ": it must be from 1e-12 to 1e12 " +
+                       "(a ratio of parameter speeds; beyond that the reparameterization degenerates)");
+    }
+  }
 }
 
 }  // namespace fairsplines
