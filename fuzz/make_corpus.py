@@ -495,6 +495,7 @@ CRASH_SEEDS = {
         "variation_out_of_range_periodic_degree5_2poles",
     ],
     "fuzz_csr": [
+        "denormal_parameter_gap_knots_too_close",
         "additive_rule_denormal_epsilon_nan",
         "classic_interpolation_points_1e-159_nan",
         "denormal_parameters_nan",

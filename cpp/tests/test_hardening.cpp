@@ -163,6 +163,15 @@ TEST(Hardening, CsrOfDenormalParametersIsRefusedOrFinite) {  // denormal_paramet
   if (!message.empty()) EXPECT_NE(message.find("parameters"), std::string::npos) << message;
 }
 
+TEST(Hardening, CsrOfADenormalParameterGapIsRefusedOrValid) {  // denormal_parameter_gap_knots_too_close
+  CsrOptions options;  // a first span of 9.8e-311 (denormal): OCCT called the knots too close
+  options.parameters = vec({0, 9.8419189453126977e-311, 5.0098419189453231e-308});
+  const PointMatrix q = rows2({{-7.98779296875, -8}, {-0.03125, -0.031249999999999972},
+                               {-0.031249968749999971, 0.033447265625}});
+  const std::string message = refusal([&] { expectValid(csrSpline(q, options)); });
+  if (!message.empty()) EXPECT_NE(message.find("too close together"), std::string::npos) << message;
+}
+
 TEST(Hardening, CsrOfParametersAt1e200IsFinite) {  // parameters_1e200_nan
   CsrOptions options;
   options.parameters = vec({0, 1e200, 2e200});

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -75,7 +76,9 @@ inline void requireSeparateKnots(const Eigen::VectorXd& knots, const std::string
     const double a = knots[i - 1], b = knots[i], size = std::max(std::abs(a), std::abs(b));
     const double ulp = std::nextafter(size, HUGE_VAL) - size;
     const double gap = b - a;
-    if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp)) {
+    // Spans of denormal size are refused too: OCCT's knot check (gp::Resolution, the smallest
+    // normal double) calls them too close.
+    if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp) || !(gap > std::numeric_limits<double>::min())) {
       throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" +
                        exactNumber(a) + " and " + exactNumber(b) +
                        ") are too close together (or not increasing): their span is below the precision of the knots");
