@@ -14,6 +14,7 @@ FUZZ_BUILD   ?= build-fuzz
 ASAN_BUILD   ?= build-asan
 FUZZ_SECONDS ?= 30
 FUZZ_TIMEOUT ?= 5
+FUZZ_SEED    ?=
 SANITIZED_CMAKE = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
                   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g"
 
@@ -79,7 +80,7 @@ bench: build
 fuzz: deps-sanitizers
 	cmake -S . -B $(FUZZ_BUILD) $(SANITIZED_CMAKE) -DFAIRSPLINES_FUZZ=ON >/dev/null
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
-	bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TIMEOUT)
+	FUZZ_SEED=$(FUZZ_SEED) bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TIMEOUT)
 
 # The GoogleTest suite built with -fsanitize=address,undefined (UBSan does not recover).
 test-sanitize: deps-sanitizers

@@ -3,6 +3,9 @@
 # fuzz/corpus/<harness>/ (new inputs go to BUILD/corpus/<harness>/, the repository's corpus
 # is only read), one input at most TIMEOUT seconds. Prints each harness's executions and
 # whether it ran clean; findings are saved in BUILD/findings/. Exits 1 if there is one.
+# FUZZ_SEED=N fixes libFuzzer's random seed, so that a run from the committed corpus makes the
+# same inputs in the same order (CI: a finding there is one anybody can replay; without a
+# seed each run explores anew).
 # Usage: fuzz/run.sh BUILD [SECONDS] [TIMEOUT] [HARNESS...]   (make fuzz)
 set -uo pipefail
 build=$1
@@ -24,7 +27,7 @@ for h in "${harnesses[@]}"; do
   mkdir -p "$build/corpus/$h"
   log=$build/logs/$h.log
   start=$SECONDS
-  "$build/fuzz/$h" -max_total_time="$seconds" -timeout="$timeout" -max_len=512 -print_final_stats=1 \
+  "$build/fuzz/$h" ${FUZZ_SEED:+-seed="$FUZZ_SEED"} -max_total_time="$seconds" -timeout="$timeout" -max_len=512 -print_final_stats=1 \
     -artifact_prefix="$build/findings/$h-" "$build/corpus/$h" "$here/corpus/$h" >"$log" 2>&1
   rc=$?
   runs=$(grep -o "stat::number_of_executed_units: [0-9]*" "$log" | tail -1 | grep -o "[0-9]*$")

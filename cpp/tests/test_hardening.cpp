@@ -123,6 +123,14 @@ TEST(Hardening, PeriodicDegreeAtLeastPoleCountIsRefused) {
   expectRefused([&] { curvatureVariation(five2); }, "degree 5 needs at least 5 poles, got 2");
 }
 
+TEST(Hardening, DerivativePolygonsThatOverflowAreRefused) {  // fuzz_certificate, found in CI's 20 s run
+  // A pole of 1e300 over a knot span of 2.4e-4: the second-derivative polygon was -inf.
+  const BSplineCurve c = curveOf(3, rows2({{-0.03125, -0.031249999999999972}, {-0.031249968749999971, 0},
+                                           {1e300, 0.03125}, {-0.0625, -0.060546875}}),
+                                 vec({2.84375, 2.843994140625}), ints({4, 4}), false);
+  expectRefused([&] { derivativePolygons(c); }, "not finite");
+}
+
 TEST(Hardening, CertificateOfAHugePeriodicPoleIsFiniteOrRefused) {  // normal_nan_periodic_pole_1.8e308
   const BSplineCurve c = curveOf(3, rows2({{1, -1.8e308}, {2, 1}, {0, 3}, {-2, 1}, {-1, -1}}), vec({0, 1, 2, 3, 4, 5}),
                                  ints({1, 1, 1, 1, 1, 1}), true);

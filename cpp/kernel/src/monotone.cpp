@@ -1017,6 +1017,9 @@ DerivativePolygons derivativePolygons(const BSplineCurve& cubic) {
     if (!(h > 0)) throw InputError("knots t_" + std::to_string(i + 2) + " and t_" + std::to_string(i + 4) + " coincide");
     out.second.row(i) = 2.0 / h * (out.first.row(i + 1) - out.first.row(i));  // eq. (5)
   }
+  // Poles far apart over short knot spans overflow the derivatives' control points.
+  requireFinite(out.first, "the cubic's first-derivative polygon (eq. (3))", "control points");
+  requireFinite(out.second, "the cubic's second-derivative polygon (eq. (5))", "control points");
   return out;
 }
 
