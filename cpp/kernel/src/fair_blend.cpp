@@ -39,17 +39,13 @@ struct Plane {
   Vec2 local(const Vec3& v) const { return {v.dot(e1), v.dot(e2)}; }
 };
 
-void requireFinite(const Vec3& v, const char* name) {
-  if (!v.allFinite()) throw InputError(std::string(name) + " is not finite");
-}
-
 /// The plane of the ends; throws InputError where there is none or it is ambiguous.
 Plane planeOf(const BlendEnds& e, bool curvaturesGiven) {
-  requireFinite(e.p0, "p0");
-  requireFinite(e.p1, "p1");
-  requireFinite(e.t0, "t0");
-  requireFinite(e.t1, "t1");
-  requireFinite(e.normal, "the normal");
+  requireFiniteInput(e.p0, "p0");
+  requireFiniteInput(e.p1, "p1");
+  requireFiniteInput(e.t0, "t0");
+  requireFiniteInput(e.t1, "t1");
+  requireFiniteInput(e.normal, "the normal");
   const Vec3 d = e.p1 - e.p0;
   const double scale = std::max(e.p0.cwiseAbs().maxCoeff(), e.p1.cwiseAbs().maxCoeff());
   if (!(d.norm() > 1e-14 * std::max(scale, 1e-300))) throw InputError("the end points p0 and p1 coincide: a blend needs two points");

@@ -554,10 +554,6 @@ struct Normalized {
   Vec2 P, T;                    // p1 and t1 in the frame
 };
 
-void requireFinite(const Vec3& v, const char* name) {
-  if (!v.allFinite()) throw InputError(std::string(name) + " is not finite");
-}
-
 struct Classified {
   EndConditions ec;
   Normalized n;
@@ -565,10 +561,10 @@ struct Classified {
 
 /// Classifies the end conditions (no orientation choice yet: a, b as seen from p0).
 Classified classify(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& t1) {
-  requireFinite(p0, "p0");
-  requireFinite(t0, "t0");
-  requireFinite(p1, "p1");
-  requireFinite(t1, "t1");
+  requireFiniteInput(p0, "p0");
+  requireFiniteInput(t0, "t0");
+  requireFiniteInput(p1, "p1");
+  requireFiniteInput(t1, "t1");
   if (t0.norm() == 0.0) throw InputError("t0 is zero: give the start tangent direction");
   if (t1.norm() == 0.0) throw InputError("t1 is zero: give the end tangent direction");
   Classified out;

@@ -41,6 +41,13 @@ void requireFinite(const Eigen::DenseBase<Derived>& a, const std::string& what, 
                    ", from 0): the input is too large, too small or too close together for double precision");
 }
 
+/// Throw InputError("<name> is not finite") unless every coordinate of the input v (a point,
+/// a direction) is finite.
+template <class Derived>
+void requireFiniteInput(const Eigen::DenseBase<Derived>& v, const std::string& name) {
+  if (firstNonFinite(v) >= 0) throw InputError(name + " is not finite");
+}
+
 /// The same for count raw items of `width` doubles each (the csr fast route's scratch arrays).
 inline void requireFinite(const double* data, Eigen::Index count, int width, const std::string& what,
                           const char* part) {
