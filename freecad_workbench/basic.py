@@ -117,9 +117,13 @@ class LineSegment(BasicCurve):
         super().__init__(_kernel.line_segment(self.start, self.end))
 
     def to_part(self):
+        """A Part.LineSegment; one longer than OCCT's lines hold (Precision::Infinite, 2e100)
+        comes back as its exact degree-1 B-spline."""
         import FreeCAD
         import Part
 
+        if self.size() >= 2e100:
+            return super().to_part()
         return Part.LineSegment(FreeCAD.Vector(*self.start), FreeCAD.Vector(*self.end))
 
 

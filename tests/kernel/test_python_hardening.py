@@ -160,14 +160,27 @@ def test_from_edge_refuses_unbounded_conics():
     refused(fw.basic.from_edge, Part.Line(V(0, 0, 0), V(1, 0, 0)), match="unbounded")
 
 
-@pytest.mark.parametrize("make", [lambda: fw.basic.EllipseArc(major_radius=1e300),
-                                  lambda: fw.basic.ArchimedeanSpiral(a=1e300),
-                                  lambda: fw.basic.HyperbolaArc(major_radius=1e300)],
+@pytest.mark.parametrize("make, size", [(lambda: fw.basic.EllipseArc(major_radius=1e300), 1e300),
+                                        (lambda: fw.basic.ArchimedeanSpiral(a=1e300), 2.828e300),
+                                        (lambda: fw.basic.HyperbolaArc(major_radius=1e300), 5.4308e299)],
                          ids=["ellipse", "spiral", "hyperbola"])
-def test_basic_curves_whose_size_overflows_are_refused(make):
-    """Their size() was inf. The kernel refuses them now (sampled when built); the Python
-    check of size() stays behind it."""
-    with pytest.raises(fw.InputError, match="too large for double precision|size is not finite"):
+def test_basic_curves_of_size_1e300_are_measured_by_meaning(make, size):
+    """Their size() was inf (the extent by squares), so they were refused; their geometry is
+    finite, and so is what is built from them. OCCT evaluates the Part curves' ends."""
+    curve = make()
+    assert curve.size() == pytest.approx(size, rel=1e-4)
+    part = curve.to_part()
+    for u, end in ((part.FirstParameter, 0.0), (part.LastParameter, 1.0)):
+        assert part.value(u).distanceToPoint(curve.value(end)) <= 1e-12 * size
+    designed = fw.design_spline([(curve, [0.5])])
+    assert all(math.isfinite(c) for p in designed.getPoles() for c in p)
+
+
+@pytest.mark.parametrize("make", [lambda: fw.basic.EllipseArc(center=(1.7e308, 0, 0), major_radius=1.7e308),
+                                  lambda: fw.basic.ArchimedeanSpiral(a=1e307, b=1e307)],
+                         ids=["ellipse", "spiral"])
+def test_basic_curves_whose_points_overflow_are_refused(make):
+    with pytest.raises(fw.InputError, match="too large for double precision|size is not finite|too large"):
         make()
 
 
@@ -220,3 +233,75 @@ def test_arrays_of_points_must_hold_real_numbers(points):
     """numpy cast a complex array to its real part with only a warning: a silently other curve."""
     with pytest.raises(fw.InputError, match="must be real numbers"):
         fw.csr_spline(points)
+
+
+def _scaled_bspline(s):
+    """A planar cubic B-spline with one curvature maximum, its poles multiplied by s."""
+    c = Part.BSplineCurve()
+    poles = [V(0, 0, 0), V(1, 0.2, 0), V(2, 0.9, 0), V(2.6, 2, 0), V(2.7, 3.1, 0), V(2.4, 4, 0)]
+    c.buildFromPolesMultsKnots([p * s for p in poles], [4, 1, 1, 4], [0, 1, 2, 3], False, 3)
+    return c
+
+
+@pytest.mark.parametrize("s", [1e300, 1e-300], ids=["huge", "tiny"])
+def test_analyses_of_huge_and_tiny_curves_are_those_of_the_unit_curve_scaled(s):
+    """curvature_profile, curvature_variation and check_monotone_curvature of a curve with poles
+    1e300 or 1e-300 apart gave NaN (the Python fuzz's "huge" and "tiny"; "tiny" was also "not
+    planar"). The referee is OpenCASCADE's curvature of the unit-size curve."""
+    unit, curve = _scaled_bspline(1.0), _scaled_bspline(s)
+    profile = fw.curvature_profile(curve, n=200)
+    assert np.isfinite(profile.kappa).all() and np.isfinite(profile.s).all()
+    assert profile.signed
+    occt = np.array([unit.curvature(u) for u in profile.u])
+    np.testing.assert_allclose(np.abs(profile.kappa) * s, occt, rtol=1e-12)
+    assert profile.s[-1] / s == pytest.approx(unit.length(), rel=1e-9)
+    assert fw.curvature_variation(curve) == pytest.approx(fw.curvature_variation(unit), rel=1e-12)
+    report, unit_report = fw.check_monotone_curvature(curve), fw.check_monotone_curvature(unit)
+    assert report.monotone == unit_report.monotone
+    assert np.isfinite(report.normal).all()
+    assert report.kappa_start * s == pytest.approx(unit.curvature(0.0), rel=1e-12)
+
+
+def test_a_curve_that_does_not_move_is_refused_by_that_name():
+    """All poles equal: curvature_profile gave NaN curvatures and curvature_variation NaN."""
+    point = Part.BSplineCurve()
+    point.buildFromPolesMultsKnots([V(1, 1, 0)] * 4, [4, 4], [0, 1], False, 3)
+    for analysis in (fw.curvature_profile, fw.curvature_variation, fw.check_monotone_curvature):
+        refused(analysis, point, match="the curve does not move")
+
+
+@pytest.mark.parametrize("differences", [
+    [(0, 0), (1e307, 1e307), (2e307, 0), (3e307, 1e307), (4e307, 0)],
+    [(0, 0), (0, 1e300), (0, 0)],
+], ids=["1e307 apart", "1e300 step"])
+def test_algorithm_1_of_huge_differences_is_the_scaled_design(differences):
+    """clamp_to_fair_locations of differences 1e307 apart returned NaN differences."""
+    scale = max(abs(x) for d in differences for x in d)
+    clamped, moved = fw.clamp_to_fair_locations((1, 0), differences)
+    assert np.isfinite(clamped).all() and np.isfinite(moved).all()
+    unit_clamped, unit_moved = fw.clamp_to_fair_locations((1 / scale, 0), np.asarray(differences) / scale)
+    np.testing.assert_allclose(clamped / scale, unit_clamped, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(moved / scale, unit_moved, rtol=1e-12, atol=1e-15)
+
+
+def test_a_fair_blend_of_ends_very_close_together_is_finite():
+    """Ends 2.4e-63 apart gave an infinite curvature variation."""
+    curve, report = fw.fair_blend_solution((2.4308653429145085e-63, 0.0), (0.0, 1.0), (0.0, 0.0), (1.0, 0.0))
+    assert math.isfinite(report.variation) and report.monotone
+    assert all(math.isfinite(c) for p in curve.getPoles() for c in p)
+    assert curve.value(curve.FirstParameter).distanceToPoint(V(2.4308653429145085e-63, 0, 0)) < 1e-75
+
+
+def test_basic_curve_refusals_name_the_shape():
+    """A parabola whose points overflow was called "the rational curve"."""
+    refused(fw.basic.ParabolaArc, focal=0.0098, t0=-6.0, t1=1e160, match="parabola arc")
+
+
+def test_a_line_segment_1e300_long_has_its_size():
+    """Its extent was computed by squares: "the extent overflows"."""
+    segment = fw.basic.LineSegment((1e300, 0, 0), (1e300, 1e300, 0))
+    assert segment.size() == pytest.approx(1e300, rel=1e-12)
+    part = segment.to_part()  # a B-spline: OCCT's lines stop at 2e100 (its length() overflows)
+    assert part.value(part.FirstParameter) == V(1e300, 0, 0)
+    assert part.value(part.LastParameter) == V(1e300, 1e300, 0)
+    assert part.value(0.5 * (part.FirstParameter + part.LastParameter)) == V(1e300, 5e299, 0)

@@ -1,5 +1,7 @@
 #include "fairsplines/analysis.hpp"
 
+#include "fairsplines/finite.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
@@ -11,16 +13,43 @@ namespace {
 
 Eigen::Vector3d toEigen(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 
-/// Diagonal of the bounding box of the poles: the curve's size.
-double poleSize(const Handle(Geom_BSplineCurve)& curve) {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
-  Eigen::Vector3d hi = -lo;
+/// Where the poles are and how far they spread: offsets from the first pole, divided by a
+/// power of two at least half their largest coordinate spread (finite.hpp, powerOfTwoScale).
+/// The division is exact and the offsets are at most 2 in size, so the squares and cubes of
+/// lengths in the numerics below neither overflow nor underflow: a curve 1e300 or 1e-300 in
+/// size is measured by meaning, not by accident.
+struct PoleFrame {
+  Eigen::Vector3d origin;  ///< the first pole, divided by `scale`
+  double scale = 1.0;
+  Eigen::Vector3d offset(const gp_Pnt& p) const { return toEigen(p) / scale - origin; }
+};
+
+/// Throws InputError("the curve does not move ...") when the poles coincide to double precision.
+PoleFrame poleFrame(const Handle(Geom_BSplineCurve)& curve) {
+  const Eigen::Vector3d first = toEigen(curve->Pole(1));
+  double half = 0.0, magnitude = 0.0;  // half the spread: no overflow near the largest doubles
   for (int i = 1; i <= curve->NbPoles(); ++i) {
     const Eigen::Vector3d p = toEigen(curve->Pole(i));
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+    half = std::max(half, (0.5 * p - 0.5 * first).cwiseAbs().maxCoeff());
+    magnitude = std::max(magnitude, p.cwiseAbs().maxCoeff());
   }
-  return (hi - lo).norm();
+  if (belowRounding(half, 0.5 * magnitude)) {
+    throw InputError("the curve does not move: all its poles coincide to double precision");
+  }
+  PoleFrame frame;
+  frame.scale = powerOfTwoScale(half);
+  frame.origin = first / frame.scale;
+  return frame;
+}
+
+/// A copy of the curve moved and scaled by its PoleFrame (weights and knots unchanged).
+Handle(Geom_BSplineCurve) normalizedCopy(const Handle(Geom_BSplineCurve)& curve, const PoleFrame& frame) {
+  Handle(Geom_BSplineCurve) copy = Handle(Geom_BSplineCurve)::DownCast(curve->Copy());
+  for (int i = 1; i <= curve->NbPoles(); ++i) {
+    const Eigen::Vector3d p = frame.offset(curve->Pole(i));
+    copy->SetPole(i, gp_Pnt(p[0], p[1], p[2]));
+  }
+  return copy;
 }
 
 double speed(const Handle(Geom_BSplineCurve)& curve, double u) {
@@ -66,19 +95,25 @@ double signedCurvature(const gp_Vec& d1, const gp_Vec& d2, const gp_Vec& n) {
 
 std::optional<gp_Vec> planeNormal(const Handle(Geom_BSplineCurve)& curve, double relTol) {
   const int n = curve->NbPoles();
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (int i = 1; i <= n; ++i) centroid += toEigen(curve->Pole(i));
+  const PoleFrame frame = poleFrame(curve);  // offsets of size <= 2: the covariance is finite
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), lo = Eigen::Vector3d::Zero(), hi = lo;
+  for (int i = 1; i <= n; ++i) {
+    const Eigen::Vector3d d = frame.offset(curve->Pole(i));
+    centroid += d;
+    lo = lo.cwiseMin(d);
+    hi = hi.cwiseMax(d);
+  }
   centroid /= n;
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   for (int i = 1; i <= n; ++i) {
-    const Eigen::Vector3d d = toEigen(curve->Pole(i)) - centroid;
+    const Eigen::Vector3d d = frame.offset(curve->Pole(i)) - centroid;
     cov += d * d.transpose();
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   Eigen::Vector3d normal = eig.eigenvectors().col(0);  // smallest spread
-  const double size = poleSize(curve);
+  const double size = (hi - lo).norm();  // the bounding box's diagonal, in the frame's units
   double offPlane = 0.0;
-  for (int i = 1; i <= n; ++i) offPlane = std::max(offPlane, std::abs((toEigen(curve->Pole(i)) - centroid).dot(normal)));
+  for (int i = 1; i <= n; ++i) offPlane = std::max(offPlane, std::abs((frame.offset(curve->Pole(i)) - centroid).dot(normal)));
   if (offPlane > relTol * size) return std::nullopt;
   // A curve in a plane parallel to a coordinate plane gets exactly that axis as normal.
   for (int axis = 0; axis < 3; ++axis) {
@@ -104,21 +139,36 @@ CurvatureProfile curvatureProfile(const Handle(Geom_BSplineCurve)& curve, int n,
   }
   u.push_back(breaks.back());
 
+  // Curvature and arc length are measured on the curve scaled to size about 1 and scaled
+  // back (kappa = kappa' / scale, s = s' scale): a curve of size 1e300 or 1e-300 gets its
+  // curvature, not 0/0.
+  const PoleFrame frame = poleFrame(curve);
+  const Handle(Geom_BSplineCurve) unit = normalizedCopy(curve, frame);
   CurvatureProfile profile;
-  const std::optional<gp_Vec> normal = planeNormal(curve);
+  const std::optional<gp_Vec> normal = planeNormal(unit);
   profile.isSigned = normal.has_value();
   profile.normal = normal.value_or(gp_Vec(0, 0, 1));
   const Eigen::Index count = static_cast<Eigen::Index>(u.size());
   profile.u = Eigen::Map<const Eigen::VectorXd>(u.data(), count);
   profile.s.resize(count);
   profile.kappa.resize(count);
+  double length = 0.0;
   for (Eigen::Index j = 0; j < count; ++j) {
     gp_Pnt p;
     gp_Vec d1, d2;
-    curve->D2(u[j], p, d1, d2);
-    profile.kappa[j] = profile.isSigned ? signedCurvature(d1, d2, profile.normal) : curvature3D(d1, d2);
-    profile.s[j] = j == 0 ? 0.0 : profile.s[j - 1] + arcLength(curve, u[j - 1], u[j]);
+    unit->D2(u[j], p, d1, d2);
+    const double kappa = profile.isSigned ? signedCurvature(d1, d2, profile.normal) : curvature3D(d1, d2);
+    if (!std::isfinite(kappa)) {
+      throw InputError("the curvature is undefined at u = " + exactNumber(u[j]) +
+                       ": the curve's derivative vanishes there (coincident poles?)");
+    }
+    if (j > 0) length += arcLength(unit, u[j - 1], u[j]);
+    profile.kappa[j] = kappa / frame.scale;
+    profile.s[j] = length * frame.scale;
   }
+  // The boundary rule: a curvature or length beyond double precision is refused by name.
+  requireFinite(profile.kappa, "the curve's curvature profile", "curvatures");
+  requireFinite(profile.s, "the curve's curvature profile", "arc lengths");
   return profile;
 }
 

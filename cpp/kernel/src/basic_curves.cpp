@@ -51,7 +51,7 @@ void requireEvaluable(const BasicCurve& curve, const char* what, bool still = fa
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  const double extent = (hi - lo).norm(), scale = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  const double extent = (hi - lo).stableNorm(), scale = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   if (!std::isfinite(extent)) {
     throw InputError("the " + std::string(what) + " is too large for double precision: its extent overflows");
   }
@@ -85,7 +85,7 @@ double BasicCurve::size() const {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  return (hi - lo).norm();
+  return (hi - lo).stableNorm();  // no overflow of the squares for a curve 1e300 in size
 }
 
 double BasicCurve::parameterOf(const Eigen::Vector3d& q, double tolerance) const {
@@ -133,9 +133,12 @@ double BasicCurve::parameterOf(const Eigen::Vector3d& q, double tolerance) const
   return requireFiniteParameter(u, q);
 }
 
-RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous) : h_(std::move(homogeneous)) {
+RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous, const char* what) : h_(std::move(homogeneous)) {
   if (h_.rows() < 2 || h_.rows() > 4) throw InputError("a rational Bézier basic curve has degree 1 to 3");
-  if (!h_.allFinite()) throw InputError("the homogeneous control points are not finite");
+  if (!h_.allFinite()) {
+    throw InputError("the " + std::string(what) + "'s homogeneous control points are not finite: its numbers are " +
+                     "not finite or too large for double precision");
+  }
   // The weight polynomial must keep one sign on [0, 1]; make it positive.
   double lo = 1e300, hi = -1e300;
   for (int j = 0; j <= 256; ++j) {
@@ -150,8 +153,10 @@ RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous) : h_(std
     lo = -lo;
     hi = -hi;
   }
-  if (lo <= 1e-12 * std::max(1.0, hi)) throw InputError("the weight function of the rational curve vanishes on [0, 1]");
-  requireEvaluable(*this, "rational curve");
+  if (lo <= 1e-12 * std::max(1.0, hi)) {
+    throw InputError("the weight function of the " + std::string(what) + " vanishes on [0, 1]");
+  }
+  requireEvaluable(*this, what);
 }
 
 void RationalBezierCurve::jets(double u, Eigen::Vector4d& f, Eigen::Vector4d& df, Eigen::Vector4d& d2f) const {
@@ -224,7 +229,7 @@ std::unique_ptr<RationalBezierCurve> lineSegment(const Eigen::Vector3d& p0, cons
   HomogeneousBezier h(2, 4);
   h.row(0) = homogeneous(p0, 1.0);
   h.row(1) = homogeneous(p1, 1.0);
-  return std::make_unique<RationalBezierCurve>(h);
+  return std::make_unique<RationalBezierCurve>(h, "line segment");
 }
 
 namespace {
@@ -260,7 +265,7 @@ HomogeneousBezier checkedCircle(const Frame& frame, double radius, double start,
 }  // namespace
 
 CircleArc::CircleArc(const Frame& frame, double radius, double start, double sweep)
-    : RationalBezierCurve(checkedCircle(frame, radius, start, sweep)),
+    : RationalBezierCurve(checkedCircle(frame, radius, start, sweep), "circle arc"),
       frame_(frame),
       radius_(radius),
       start_(start),
@@ -310,7 +315,7 @@ std::unique_ptr<RationalBezierCurve> ellipseArc(const Frame& frame, double a, do
   if (!(a > 0.0) || !(b > 0.0) || !std::isfinite(a) || !std::isfinite(b)) {
     throw InputError("degenerate ellipse arc: both radii must be positive");
   }
-  return std::make_unique<RationalBezierCurve>(ellipticQuadratic(frame, a, b, start, sweep));
+  return std::make_unique<RationalBezierCurve>(ellipticQuadratic(frame, a, b, start, sweep), "ellipse arc");
 }
 
 std::unique_ptr<RationalBezierCurve> parabolaArc(const Frame& frame, double focal, double t0, double t1) {
@@ -325,7 +330,7 @@ std::unique_ptr<RationalBezierCurve> parabolaArc(const Frame& frame, double foca
   h.row(0) = homogeneous(point(t0), 1.0);
   h.row(1) = homogeneous(point(t0) + 0.5 * (t1 - t0) * tangent0, 1.0);
   h.row(2) = homogeneous(point(t1), 1.0);
-  return std::make_unique<RationalBezierCurve>(h);
+  return std::make_unique<RationalBezierCurve>(h, "parabola arc");
 }
 
 std::unique_ptr<RationalBezierCurve> hyperbolaArc(const Frame& frame, double a, double b, double t0, double t1) {
@@ -343,7 +348,7 @@ std::unique_ptr<RationalBezierCurve> hyperbolaArc(const Frame& frame, double a, 
   const Eigen::Vector3d w1P1 = std::cosh(half) * frame.origin + frame.dir(a * std::cosh(mid), b * std::sinh(mid));
   h.row(1) << w1P1.x(), w1P1.y(), w1P1.z(), std::cosh(half);
   h.row(2) = homogeneous(frame.at(a * std::cosh(t1), b * std::sinh(t1)), 1.0);
-  return std::make_unique<RationalBezierCurve>(h);
+  return std::make_unique<RationalBezierCurve>(h, "hyperbola arc");
 }
 
 ParametricCurve::ParametricCurve(Jet jet, double s0, double s1) : jet_(std::move(jet)), s0_(s0), s1_(s1) {

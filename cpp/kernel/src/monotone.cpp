@@ -196,6 +196,7 @@ struct PlanarCurve {
   int degree = 3;
   bool closed = false;  // periodic: the seam is a joint too
   Vec3 normal = Vec3::UnitZ();
+  double scale = 1.0;   // poles = (model poles - first pole) / scale, a power of two (exact)
 };
 
 /// de Boor's algorithm with one argument per level: the blossom of the span's polynomial.
@@ -323,7 +324,8 @@ Vec2 unitTangent(const SpanPolys& s, double t) {
 
 double paramAt(const Arc& arc, double t) { return arc.u0 + t * (arc.u1 - arc.u0); }
 
-SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol) {
+/// `scale`: the PlanarCurve's; curvatures are reported in the curve's own units (kappa' / scale).
+SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol, double scale) {
   SpanCertificate c;
   c.u0 = arc.u0;
   c.u1 = arc.u1;
@@ -337,8 +339,8 @@ SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol) {
     c.reason = "the derivative vanishes near u = " + num(c.at, 6) + ": the curvature is undefined there";
     return c;
   }
-  c.kappa0 = kappaAt(s, 0.0);
-  c.kappa1 = kappaAt(s, 1.0);
+  c.kappa0 = kappaAt(s, 0.0) / scale;
+  c.kappa1 = kappaAt(s, 1.0) / scale;
   const double tol = relTol * s.scale;
   const Bound up = certifyLower(s.n, tol);     // N >= -tol: kappa nondecreasing
   const Bound down = certifyLower(-s.n, tol);  // N <= tol: kappa nonincreasing
@@ -369,7 +371,7 @@ SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol) {
     c.trend = CurvatureTrend::Extremum;
     c.maximum = tPos < tNeg;  // kappa rises, then falls
     c.at = paramAt(arc, t);
-    c.kappaAt = kappaAt(s, t);
+    c.kappaAt = kappaAt(s, t) / scale;
     c.reason = std::string("curvature ") + (c.maximum ? "maximum" : "minimum") + " kappa = " + num(c.kappaAt, 6) +
                " at u = " + num(c.at, 6) + ": kappa' changes sign (N(u = " + num(paramAt(arc, tPos), 6) +
                ") = " + num(eval(s.n, tPos), 3) + " > 0, N(u = " + num(paramAt(arc, tNeg), 6) +
@@ -392,14 +394,14 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol) {
   polys.reserve(arcs.size());
   for (const Arc& arc : arcs) {
     polys.push_back(spanPolys(arc));
-    cert.spans.push_back(certifySpan(arc, polys.back(), relTol));
+    cert.spans.push_back(certifySpan(arc, polys.back(), relTol, curve.scale));
   }
   cert.kappaStart = cert.spans.front().kappa0;
   cert.kappaEnd = cert.spans.back().kappa1;
 
-  // Curvatures below 1e-12 / size are zero when compared at joints.
+  // Curvatures below 1e-12 / size are zero when compared at joints (size in the curve's units).
   const Eigen::Vector2d lo = curve.poles.colwise().minCoeff(), hi = curve.poles.colwise().maxCoeff();
-  const double kappaFloor = 1e-12 / std::max((hi - lo).norm(), 1e-300);
+  const double kappaFloor = 1e-12 / std::max((hi - lo).norm(), 1e-300) / curve.scale;
   std::string problem;  // the first reason that makes the curve non-monotone
   for (size_t i = 0; i < cert.spans.size() && problem.empty(); ++i) {
     const SpanCertificate& s = cert.spans[i];
@@ -500,11 +502,20 @@ PlanarCurve planarCurve(const BSplineCurve& input) {
   out.normal = n;
   Vec3 e1, e2;
   planeBasis(n, e1, e2);
-  out.poles.resize(curve.poles.rows(), 2);
+  // Scale-invariant numerics: the poles are moved to the first and divided by a power of two
+  // near their spread (exact), so that |B|^5 and the like in the certificate neither
+  // overflow for a curve 1e300 in size nor underflow for one of 1e-300. Curvatures are
+  // scaled back where they leave (certifyMonotoneCurvature).
   const Eigen::RowVectorXd origin = curve.poles.row(0);
+  const double half = ((0.5 * curve.poles).rowwise() - 0.5 * origin).cwiseAbs().maxCoeff();
+  if (belowRounding(half, 0.5 * curve.poles.cwiseAbs().maxCoeff())) {
+    throw InputError("the curve does not move: all its poles coincide to double precision");
+  }
+  out.scale = powerOfTwoScale(half);
+  out.poles.resize(curve.poles.rows(), 2);
   for (Eigen::Index i = 0; i < curve.poles.rows(); ++i) {
     Vec3 p = Vec3::Zero();
-    for (int k = 0; k < curve.dimension(); ++k) p[k] = curve.poles(i, k) - origin[k];
+    for (int k = 0; k < curve.dimension(); ++k) p[k] = curve.poles(i, k) / out.scale - origin[k] / out.scale;
     out.poles.row(i) << p.dot(e1), p.dot(e2);
   }
   out.weights = curve.weights;
@@ -1124,7 +1135,7 @@ std::vector<SegmentReport> checkSegments(const BSplineCurve& cubic) {
 MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef differences,
                               const Eigen::VectorXd& knotsIn, const Eigen::Vector2d& start) {
   if (!firstVector.allFinite()) throw InputError("the first control vector is not finite");
-  if (!(firstVector.norm() > 0.0)) throw InputError("the first control vector is zero");
+  if (!(firstVector.cwiseAbs().maxCoeff() > 0.0)) throw InputError("the first control vector is zero");
   if (!start.allFinite()) throw InputError("the start point is not finite");
   if (differences.cols() != 2) throw InputError("the differences dV_i must be 2D vectors (rows of 2 numbers)");
   const Eigen::Index m = differences.rows();
@@ -1157,13 +1168,21 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
   }
   if (!(t[n + 1] > t[3])) throw InputError("the knot vector has an empty domain");
 
+  // Every condition of Algorithm 1 is invariant under scaling, so the vectors are divided by a
+  // power of two near their size (exact): differences of 1e307 get their squares without
+  // overflow, and the results are scaled back where they leave.
+  double size = firstVector.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < m; ++i) size = std::max(size, differences.row(i).cwiseAbs().maxCoeff());
+  const double unit = powerOfTwoScale(size);
+  const Vec2 V0 = firstVector / unit;
+  auto asGiven = [&](Eigen::Index i) { return Vec2(differences.row(i).transpose() / unit); };
   // Work in V_0's frame, mirrored for a right turn: there every condition is the first quadrant's.
-  const Vec2 fx = firstVector.normalized(), fy(-fx.y(), fx.x());
+  const Vec2 fx = (firstVector / firstVector.cwiseAbs().maxCoeff()).normalized(), fy(-fx.y(), fx.x());
   auto c1 = [&](Eigen::Index i) { return 3.0 / (t[i + 4] - t[i + 1]); };  // eq. (3)
   auto c2 = [&](Eigen::Index i) { return 2.0 / (t[i + 4] - t[i + 2]); };  // eq. (5)
-  const Vec2 dV0 = differences.row(0).transpose();
-  const Vec2 rawE0 = c2(0) * (c1(1) * (firstVector + dV0) - c1(0) * firstVector);
-  const int turn = cross(firstVector, rawE0) < 0.0 ? -1 : 1;
+  const Vec2 dV0 = asGiven(0);
+  const Vec2 rawE0 = c2(0) * (c1(1) * (V0 + dV0) - c1(0) * V0);
+  const int turn = cross(V0, rawE0) < 0.0 ? -1 : 1;
   auto toLocal = [&](const Vec2& v) { return Vec2(v.dot(fx), turn * v.dot(fy)); };
   auto toGlobal = [&](const Vec2& v) { return Vec2(v.x() * fx + turn * v.y() * fy); };
 
@@ -1171,11 +1190,11 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
   out.turn = turn;
   out.differences.resize(m, 2);
   out.moved.resize(m);
-  std::vector<Vec2> Vs{toLocal(firstVector)};
+  std::vector<Vec2> Vs{toLocal(V0)};
   Vec2 previousE;
   for (Eigen::Index i = 0; i < m; ++i) {
     const Vec2 Vi = Vs.back(), Di = c1(i) * Vi;
-    const Vec2 asked = toLocal(differences.row(i).transpose());
+    const Vec2 asked = toLocal(asGiven(i));
     const Vec2 E = c2(i) * (c1(i + 1) * (Vi + asked) - Di);
     // dV_0: C^2_0 in the first quadrant; later dV_i: C^2_i in its fair location (Theorem 2).
     // Kept as given when in place up to rounding (so a clamped value given back stays put).
@@ -1189,15 +1208,15 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
       Vs.push_back(Vi + asked);
     } else {
       const Vec2 next = (clamped / c2(i) + Di) / c1(i + 1);
-      out.moved[i] = (next - Vi - asked).norm();
-      out.differences.row(i) = toGlobal(next - Vi).transpose();
+      out.moved[i] = (next - Vi - asked).norm() * unit;
+      out.differences.row(i) = unit * toGlobal(next - Vi).transpose();
       Vs.push_back(next);
     }
     previousE = clamped;
   }
   PointMatrix poles(n + 1, 2);
   poles.row(0) = start.transpose();
-  for (Eigen::Index i = 0; i < n; ++i) poles.row(i + 1) = poles.row(i) + toGlobal(Vs[i]).transpose();
+  for (Eigen::Index i = 0; i < n; ++i) poles.row(i + 1) = poles.row(i) + unit * toGlobal(Vs[i]).transpose();
   // Distinct knots and multiplicities (OCCT layout).
   std::vector<double> knots;
   std::vector<int> mults;

@@ -45,9 +45,10 @@ public:
 /// de Casteljau in homogeneous space and the quotient rule.
 class RationalBezierCurve : public BasicCurve {
 public:
-  /// Throws InputError for a degree above 3, non-finite data, or a weight function that
-  /// vanishes on [0, 1].
-  explicit RationalBezierCurve(HomogeneousBezier homogeneous);
+  /// Throws InputError for a degree above 3, non-finite data, a weight function that
+  /// vanishes on [0, 1], or points and derivatives that overflow or do not move in double
+  /// precision; the messages call the curve `what` ("line segment", "circle arc", ...).
+  explicit RationalBezierCurve(HomogeneousBezier homogeneous, const char* what = "rational curve");
   Eigen::Vector3d value(double u) const override;
   Eigen::Vector3d d1(double u) const override;
   Eigen::Vector3d d2(double u) const override;

@@ -127,6 +127,23 @@ inline void requireValidCurve(const BSplineCurve& curve, const std::string& what
   requireSeparateKnots(curve.knots, what);
 }
 
+/// A power of two s with size / s in [0.5, 2) (`size` > 0 and finite; 1 otherwise): dividing
+/// by it is exact, so numerics run on data of size about 1 give the same digits as before,
+/// but no square or cube of a length overflows or underflows (1e300 and 1e-300 are handled
+/// by meaning, not by accident).
+inline double powerOfTwoScale(double size) {
+  if (!(size > 0.0) || !std::isfinite(size)) return 1.0;
+  int exponent = 0;
+  std::frexp(size, &exponent);  // size = m 2^exponent, m in [0.5, 1)
+  return std::ldexp(1.0, std::min(exponent, std::numeric_limits<double>::max_exponent - 1));  // 2^1024 is inf
+}
+
+/// Is `spread` (how far the points move) lost in the rounding of coordinates as large as
+/// `magnitude`? Then the points do not move, to double precision.
+inline bool belowRounding(double spread, double magnitude) {
+  return !(spread > 64.0 * std::numeric_limits<double>::epsilon() * magnitude) || !(spread > 0.0);
+}
+
 /// Throw InputError unless every scalar is finite and within [1 / kMaxScalarRatio,
 /// kMaxScalarRatio], naming "<what> <i>".
 inline void requireModerateScalars(const Eigen::VectorXd& scalars, const std::string& what) {
