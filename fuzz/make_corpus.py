@@ -511,6 +511,7 @@ CRASH_SEEDS = {
     ],
     "fuzz_fair_blend": [
         "denormal_tangent_out_of_range_escapes",
+        "fallback_variation_7s_timeout",
         "g2_k0_denormal_nan_to_int",
         "g2_k1_-1e300_float_to_int_overflow",
     ],

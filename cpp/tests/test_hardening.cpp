@@ -21,6 +21,7 @@
 #include "fairsplines/g2_to_c2.hpp"
 #include "fairsplines/monotone.hpp"
 #include "fairsplines/occt.hpp"
+#include "work_budget.hpp"
 
 using namespace fairsplines;
 using Eigen::Vector2d;
@@ -348,4 +349,25 @@ TEST(Hardening, SlowG1BlendFinishesWithinTheWorkBudget) {  // g1_10_seconds
 TEST(Hardening, SphereOfRadius1_7e308IsRefused) {  // sphere_radius_1.7e308_patch_nan
   expectRefused([] { sphereZone(ShapeFrame{}, 1.7e308, vec({4.47998046875, 8.449951171875}), vec({-0.5, 0.5})); },
                 "is too large: the sphere's points would overflow");
+}
+
+TEST(Hardening, EndsRefusedByVogtsTheoremSearchNoClothoidSpline) {  // fallback_variation_7s_timeout
+  // G2 ends that Vogt's theorem (convex case) refuses: the solver still searched 12 clothoid-
+  // spline attempts per winding (0.5 s, 7 s sanitized). A theorem is as final as the circle
+  // tests: the fallback comes from the cubic-profile search alone. Counted in the solvers'
+  // deterministic work units, not in seconds: an outer budget counts every unit (budgets do
+  // not nest), and 2e4 is a fiftieth of what the search spent.
+  BlendEnds e;
+  e.p1 = Vector3d(1.7551651237807455, 0.95885107720840601, 0);
+  e.t1 = Vector3d(0.54030230586813977, 0.8414709848078965, 0);
+  e.k0 = 0.25;
+  e.k1 = 1;
+  e.normal = Vector3d(0, 0, 1);
+  detail::WorkBudget budget(2e4, "the test's budget");
+  const FairBlend b = fairBlend(e);
+  expectValid(b.curve);
+  EXPECT_FALSE(b.monotone);
+  EXPECT_NE(b.reason.find("(Vogt's theorem)"), std::string::npos) << b.reason;
+  EXPECT_NEAR(b.kappa0, 0.25, 1e-9);
+  EXPECT_NEAR(b.kappa1, 1.0, 1e-9);
 }

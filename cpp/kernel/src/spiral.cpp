@@ -160,8 +160,10 @@ double ClothoidSpline::variation() const {
 /// from docs/research/G2_FEASIBILITY.md (the extension past Vogt's convex case is checked
 /// numerically there and by the kernel tests, not proved). Where it fails, the one turning the
 /// data allows within the window is infeasible, and the least turning left is one full turn
-/// more. "" when the rule holds.
-static std::string turningRuleReason(double theta0, double k0, double theta1, double k1) {
+/// more. "" when the rule holds. `proved` (if given) tells whether the refusal is Vogt's
+/// convex case, a theorem, rather than the numerically checked extension.
+static std::string turningRuleReason(double theta0, double k0, double theta1, double k1, bool* proved = nullptr) {
+  if (proved != nullptr) *proved = false;
   const bool growsToEnd = std::abs(k1) > std::abs(k0);
   const double strong = std::abs(growsToEnd ? theta1 : theta0), weak = std::abs(growsToEnd ? theta0 : theta1);
   if (strong > weak) return "";
@@ -171,6 +173,7 @@ static std::string turningRuleReason(double theta0, double k0, double theta1, do
   const double within = delta * s > 0.0 ? delta : delta + 2.0 * kPi * s;
   const double degrees = 180.0 / kPi;
   const bool convex = -s * theta0 > 0.0 && s * theta1 > 0.0 && std::abs(within) < kPi;
+  if (proved != nullptr) *proved = convex;
   return std::string("the curvature grows towards the ") + (growsToEnd ? "end" : "start") +
          ", so the tangent must meet the chord at a larger angle there" +
          (convex ? " (Vogt's theorem)" : " (Vogt's theorem, extended to arcs of up to a full turn)") +
@@ -396,7 +399,7 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   const Clothoid g1 = clothoidG1(Eigen::Vector2d::Zero(), theta0, Eigen::Vector2d(1.0, 0.0), theta1);
   const double g1Turning = g1.theta(g1.length) - g1.theta0;
   std::vector<Candidate> found;
-  bool proven = false;  // a circle test failed: nothing monotone exists
+  bool proven = false;  // a circle test or Vogt's theorem failed: nothing monotone exists
   // Curvature of one sign turns the tangent that way: other windings cannot be monotone.
   const bool cShaped = k0 * k1 >= 0.0;
   auto signAllowed = [&](double Theta) { return !cShaped || Theta * (k0 + k1) > 0.0; };
@@ -433,7 +436,9 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   } else {
     out.reason = circleReason(theta0, k0, theta1, k1);
     proven = !out.reason.empty();
-    if (!proven && cShaped) out.reason = turningRuleReason(theta0, k0, theta1, k1);
+    // Refused by Vogt's theorem (convex case): as proven as the circle tests, so no clothoid
+    // spline is searched for (that search cost 0.5 s here, 7 s sanitized: a fuzz finding).
+    if (!proven && cShaped) out.reason = turningRuleReason(theta0, k0, theta1, k1, &proven);
     // Starts: the length at which a profile of shape a = (k1 - k0) aStart (b = 0) has the
     // turning. First the clothoid (aStart = 0) in every winding, and the G1 clothoid's
     // length; only where none of those is monotone, the other shapes, per winding until one
