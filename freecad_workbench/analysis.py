@@ -2,7 +2,7 @@
 extrema, and the distance from data to a curve. Accepts Part edges and curves."""
 from collections import namedtuple
 
-from . import _kernel
+from . import kernel
 from .kernel import as_count, as_points, from_part
 
 # The most samples a call takes (about 0.1 s of kernel work each way).
@@ -18,20 +18,20 @@ CurvatureExtremum = namedtuple("CurvatureExtremum", "u s kappa maximum")
 
 def curvature_profile(curve, n=512):
     """Curvature at about n samples (at least 8 per knot span) -> CurvatureProfile."""
-    u, s, kappa, signed, normal = _kernel.curvature_profile(from_part(curve), as_count(n, "n", 1, MAX_SAMPLES))
+    u, s, kappa, signed, normal = kernel.curvature_profile(from_part(curve), as_count(n, "n", 1, MAX_SAMPLES))
     return CurvatureProfile(u, s, kappa, bool(signed), tuple(normal))
 
 
 def curvature_sign_changes(curve, samples_per_span=32):
     """Number of sign changes of the curvature of a planar curve (0 for a non-planar one)."""
-    return _kernel.curvature_sign_changes(from_part(curve), as_count(samples_per_span, "samples_per_span", 1, 10_000))
+    return kernel.curvature_sign_changes(from_part(curve), as_count(samples_per_span, "samples_per_span", 1, 10_000))
 
 
 def curvature_extrema(curve, n=2048):
     """Interior local extrema of the (signed) curvature: [CurvatureExtremum(u, s, kappa, maximum)]."""
-    return [CurvatureExtremum(*e) for e in _kernel.curvature_extrema(from_part(curve), as_count(n, "n", 1, MAX_SAMPLES))]
+    return [CurvatureExtremum(*e) for e in kernel.curvature_extrema(from_part(curve), as_count(n, "n", 1, MAX_SAMPLES))]
 
 
 def max_distance(curve, points):
     """Largest distance from the points to the curve."""
-    return _kernel.max_distance(from_part(curve), as_points(points))
+    return kernel.max_distance(from_part(curve), as_points(points))

@@ -14,9 +14,9 @@ import math
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError
-from .kernel import _require_bounded, as_real, as_reals, to_part
+from .kernel import require_bounded, as_real, as_reals, to_part
 
 __all__ = [
     "BasicCurve",
@@ -104,7 +104,7 @@ class BasicCurve:
     def to_part(self):
         """FreeCAD geometry of the curve: an exact rational B-spline (subclasses with a
         native FreeCAD type return that instead)."""
-        curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, np.zeros(0))], 0.0)
+        curve, _, _ = kernel.merge_pieces([kernel.piece_polygon(self._curve, np.zeros(0))], 0.0)
         return to_part(curve)
 
     def __repr__(self):
@@ -114,7 +114,7 @@ class BasicCurve:
 class LineSegment(BasicCurve):
     def __init__(self, start, end):
         self.start, self.end = _vector3(start, "start"), _vector3(end, "end")
-        super().__init__(_kernel.line_segment(self.start, self.end))
+        super().__init__(kernel.line_segment(self.start, self.end))
 
     def to_part(self):
         import FreeCAD
@@ -135,7 +135,7 @@ class CircleArc(BasicCurve):
         self.start_angle = as_real(start_angle, "start_angle", finite=False)
         self.end_angle = as_real(end_angle, "end_angle", finite=False)
         super().__init__(
-            _kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
+            kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
                               self.end_angle - self.start_angle)
         )
 
@@ -164,7 +164,7 @@ class EllipseArc(BasicCurve):
         self.b = as_real(minor_radius, "minor_radius", finite=False)
         self.start = as_real(start, "start", finite=False)
         self.end = as_real(end, "end", finite=False)
-        super().__init__(_kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
+        super().__init__(kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
                                              self.end - self.start))
 
 
@@ -176,7 +176,7 @@ class ParabolaArc(BasicCurve):
         self.vertex = _vector3(vertex, "vertex")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.focal, self.t0, self.t1 = as_real(focal, "focal", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
-        super().__init__(_kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
+        super().__init__(kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
 
 
 class HyperbolaArc(BasicCurve):
@@ -190,7 +190,7 @@ class HyperbolaArc(BasicCurve):
         self.b = as_real(minor_radius, "minor_radius", finite=False)
         self.t0 = as_real(t0, "t0", finite=False)
         self.t1 = as_real(t1, "t1", finite=False)
-        super().__init__(_kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
+        super().__init__(kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
 
 
 class RationalCubic(BasicCurve):
@@ -215,7 +215,7 @@ class RationalCubic(BasicCurve):
         if h.ndim != 2 or h.shape[1] != 4 or not 2 <= h.shape[0] <= 4:
             raise InputError(f"homogeneous control points must be 2 to 4 rows of 4 numbers, got shape {h.shape}")
         self.homogeneous = h
-        super().__init__(_kernel.RationalBezierCurve(h))
+        super().__init__(kernel.RationalBezierCurve(h))
 
 
 class _Transcendental(BasicCurve):
@@ -227,7 +227,7 @@ class _Transcendental(BasicCurve):
         size = self.size()
         for m in (16, 32, 64, 128, 256, 512, 1024):
             marks = np.arange(1, m) / m
-            curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, marks)], 0.0)
+            curve, _, _ = kernel.merge_pieces([kernel.piece_polygon(self._curve, marks)], 0.0)
             part = to_part(curve)
             u = np.linspace(0, 1, 8 * m + 1)
             error = max((part.value(x) - self.value(x)).Length for x in u)
@@ -248,7 +248,7 @@ class ArchimedeanSpiral(_Transcendental):
         self.theta0 = as_real(theta0, "theta0", finite=False)
         self.theta1 = as_real(theta1, "theta1", finite=False)
         super().__init__(
-            _kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
+            kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
         )
 
 
@@ -260,7 +260,7 @@ class CircleInvolute(_Transcendental):
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.radius, self.t0, self.t1 = as_real(radius, "radius", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(
-            _kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
+            kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
         )
 
 
@@ -288,7 +288,7 @@ class ParametricCurve(_Transcendental):
                 return _vector3(second_derivative(s), "f''(s)")
             return (f(s + step) - 2 * f(s) + f(s - step)) / (step * step)
 
-        super().__init__(_kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
+        super().__init__(kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
 
 
 def _reversed(geometry):
@@ -311,7 +311,7 @@ def from_edge(edge):
         else:
             raise InputError(f"not an edge: {type(edge).__name__}")
     curve, t0, t1 = edge.Curve, edge.FirstParameter, edge.LastParameter
-    _require_bounded(t0, t1, type(curve).__name__)
+    require_bounded(t0, t1, type(curve).__name__)
     if isinstance(curve, (Part.Line, Part.LineSegment)):
         return LineSegment(edge.valueAt(t0), edge.valueAt(t1))
     if isinstance(curve, Part.BSplineCurve) or isinstance(curve, Part.BezierCurve):

@@ -16,21 +16,11 @@ whose end is the pole).
     post = fw.shapes.Cylinder((0, 0, 0), 1, longitudes, [0, 1, 2])
     joined = fw.join_basic_shapes(post, dome)   # Figs. 9-12: basic shape to basic shape
 """
-from collections import namedtuple
-
-
-from . import _kernel
+from . import kernel
+from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, freeform_knots_c1
 from .errors import InputError
-from .kernel import adopt, as_choice, has_bridge, surface_from_part, surface_to_part
-from .shapes import Cone, Cylinder, SphereZone, Torus
-
-BlendResult = namedtuple("BlendResult", "patches shell surface")
-BlendResult.__doc__ = (
-    "patches: [(role, Part.BSplineSurface)] with role 'basic', 'transition' or 'freeform'; "
-    "shell: a Part.Shell with one face per patch (in the same order), neighbours sharing their edges; "
-    "surface: one Part.BSplineSurface that OCCT "
-    "reports C2, or None where the complex is not C2 (the naive baseline)."
-)
+from .kernel import BlendResult, as_choice, blend_result, surface_from_part
+from .shapes import Cone, Cylinder, SphereZone, require_shape
 
 _METHODS = ("rho", "sigma", "mixed")
 
@@ -38,9 +28,7 @@ _METHODS = ("rho", "sigma", "mixed")
 def _check(shape, continuity, method):
     as_choice(continuity, "continuity", ("C2", "C1"))
     as_choice(method, "method", _METHODS)
-    if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
-        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
-    check_cost(shape)
+    check_cost(require_shape(shape))
 
 
 # The most patches of a shape a blend takes: 400 arcs x 2 pieces (800 patches, the ring's
@@ -58,35 +46,6 @@ def check_cost(shape):
                          f"{patches} patches, more than {MAX_PATCHES}; use fewer, longer arcs")
 
 
-def _result(complex_, single=True):
-    """The BlendResult of a kernel BlendComplex. With the bridge, in one hand-over: the kernel
-    builds the shell from its grid (shared edges, no sewing) and the single surface, and
-    FreeCAD adopts both as one compound; the patches are the shell's faces' surfaces (the
-    same Part.BSplineSurface, bit for bit, as a hand-over of each patch)."""
-    if has_bridge():
-        parts = adopt(complex_.result_capsule(single)).childShapes()
-        shell = parts[0]
-        roles = complex_.roles()
-        faces = shell.Faces
-        if len(faces) != len(roles):
-            raise InputError(f"the shell has {len(faces)} faces for {len(roles)} patches")
-        patches = [(role, face.Surface) for role, face in zip(roles, faces)]
-        return BlendResult(patches, shell, parts[1].Surface if len(parts) > 1 else None)
-    return _result_arrays(complex_, single)
-
-
-def _result_arrays(complex_, single=True):
-    """_result without the bridge: every patch and the single surface through arrays, the
-    shell sewn by Part from the patches' faces."""
-    import Part
-
-    patches = [(role, surface_to_part(s)) for role, _, _, s in complex_.patches()]
-    surface = complex_.single_surface() if single else None
-    shell = Part.Shell([Part.Face(s) for _, s in patches])
-    shell.sewShape()
-    return BlendResult(patches, shell, surface_to_part(surface) if surface is not None else None)
-
-
 def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
 
@@ -97,10 +56,9 @@ def freeform_knots(shape, method="rho", continuity="C2"):
     "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
-        from .blend_c1 import freeform_knots_c1
         return freeform_knots_c1(shape)
     _check(shape, "C2", method)
-    return _kernel.ring_knots(shape.around, method)
+    return kernel.ring_knots(shape.around, method)
 
 
 def _interface(shape, at):
@@ -116,12 +74,12 @@ def _complex(shape, freeform, method, naive, at):
     ring = _ring(shape, freeform)
     if isinstance(shape, SphereZone):
         if naive:
-            return _kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
-        return _kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True, at)
+            return kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
+        return kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True, at)
     if isinstance(shape, (Cylinder, Cone)):
         radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
-        return _kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
-    return _kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
+        return kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
+    return kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
                                ring, True, naive, at)
 
 
@@ -137,8 +95,6 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     and a (4,2) double strip (blend_c1.py; method unused)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
-        from .blend_c1 import blend_basic_shape_c1
-
         _check(shape, continuity, method)
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
@@ -147,8 +103,8 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     if shape.edited:
         if _interface(shape, at) != "end":
             raise InputError("an edited control structure joins at the end of its profile")
-        return _result(_kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
-    return _result(_complex(shape, freeform, method, False, _interface(shape, at)))
+        return blend_result(kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
+    return blend_result(_complex(shape, freeform, method, False, _interface(shape, at)))
 
 
 def blend_naive(shape, freeform=None, continuity="C2", at=None):
@@ -160,10 +116,8 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     if continuity == "C1":
-        from .blend_c1 import blend_naive_c1
-
         return blend_naive_c1(shape, freeform, at=_interface(shape, at))
-    return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
+    return blend_result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
 def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
@@ -179,8 +133,8 @@ def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     if shape_a.edited or shape_b.edited:
         raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
     if continuity == "C1":
-        return _result(_kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
-    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
+        return blend_result(kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
+    return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 
 def join_naive(shape_a, shape_b):
@@ -188,7 +142,7 @@ def join_naive(shape_a, shape_b):
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")
     _check(shape_b, "C2", "rho")
-    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True), single=False)
+    return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True), single=False)
 
 
 __all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots", "join_basic_shapes", "join_naive"]

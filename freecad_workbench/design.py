@@ -7,7 +7,7 @@ from collections import namedtuple
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .basic import BasicCurve, from_edge
 from .errors import InputError
 from .kernel import as_count, as_flag, as_real, from_part, to_part
@@ -72,10 +72,10 @@ def design_spline(pieces, join_tolerance=1e-6, details=False):
     for index, item in enumerate(pieces):
         curve, marks = _piece(item, index)
         try:
-            polygons.append(_kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
+            polygons.append(kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
         except InputError as exc:
             raise InputError(f"piece {index}: {exc}") from None
-    curve, joins, ranges = _kernel.merge_pieces(polygons, join_tolerance)
+    curve, joins, ranges = kernel.merge_pieces(polygons, join_tolerance)
     part = to_part(curve)
     if not details:
         return part
@@ -89,7 +89,7 @@ def revolve_profile(curve, axis_point=(0, 0, 0), axis_direction=(0, 0, 1)):
     from .basic import _vector3
     from .kernel import surface_to_part
 
-    surface = _kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
+    surface = kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
                               _vector3(axis_direction, "axis_direction"))
     return surface_to_part(surface)
 
@@ -109,9 +109,9 @@ def approximation_error(curve, marks, samples=40):
     if not isinstance(curve, BasicCurve):
         raise InputError(f"curve must be a fw.basic curve, got {type(curve).__name__}")
     samples = as_count(samples, "samples", 1, 10_000)
-    u = _kernel.complete_marks(piece_marks(curve, marks))
+    u = kernel.complete_marks(piece_marks(curve, marks))
     m = len(u) - 1
-    quintic = np.asarray(_kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)
+    quintic = np.asarray(kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)
     h = np.diff(u)
     x = np.linspace(0.0, 1.0, samples + 1)
 
@@ -129,7 +129,7 @@ def approximation_error(curve, marks, samples=40):
     exact, exact_k = _jets(curve, uu)
     qp = float(np.max(np.linalg.norm(p - exact, axis=1)))
     qk = _max_ignoring_undefined(np.abs(_curvature(d1, d2) - exact_k))
-    spline, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(curve._curve, u)], 0.0)
+    spline, _, _ = kernel.merge_pieces([kernel.piece_polygon(curve._curve, u)], 0.0)
     part = to_part(spline)
     lo, hi = (u[2], u[m - 2]) if m >= 4 else (0.0, 1.0)
     t = np.linspace(lo, hi, samples * m + 1)

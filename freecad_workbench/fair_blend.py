@@ -28,9 +28,9 @@ from typing import Tuple
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError, NoMonotoneSolution
-from .kernel import _require_bounded, as_choice, as_vector, to_part
+from .kernel import require_bounded, as_choice, as_vector, to_part
 from .monotone import METHODS as PAPER_METHODS
 from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
 
@@ -100,7 +100,7 @@ def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
     False, report.reason why) and the curve is the fairest found, still meeting the ends.
     Raises InputError on bad input: NaN, a zero tangent, coincident points, ends not in one
     plane, only one of k0 and k1, curvatures of ends outside the XY plane without a normal."""
-    result = _kernel.fair_blend(
+    result = kernel.fair_blend(
         as_vector(p0, "p0"),
         as_vector(t0, "t0"),
         as_vector(p1, "p1"),
@@ -163,7 +163,7 @@ def _edge_of(item, name):
 
 def _end_parameter(edge, end, name):
     first, last = edge.FirstParameter, edge.LastParameter
-    _require_bounded(first, last, type(edge.Curve).__name__)
+    require_bounded(first, last, type(edge.Curve).__name__)
     if isinstance(end, str):
         if end not in END_NAMES:
             raise InputError(f"{name} must be 'start', 'end', a vertex or a point, got {end!r}")

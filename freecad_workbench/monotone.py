@@ -17,7 +17,7 @@ from typing import Optional, Tuple
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError
 from .kernel import as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
 
@@ -46,7 +46,7 @@ def monotone_end_conditions(p0, t0, p1, t1):
     behind p1, turn by less than 90 degrees, and min(a, b) <= max(a, b) cos(turn) with
     a = |M - p0|, b = |p1 - M| (equality: a parabola from its vertex). Raises InputError on bad
     input (a zero tangent, coincident points, NaN)."""
-    info = _kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"))
+    info = kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"))
     return EndConditions(**info)
 
 
@@ -73,7 +73,7 @@ def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
     the end conditions (or, for "grid", when the grid finds none); InputError on bad input.
     fw.monotone_curvature_spline solves every G1 problem (see fair_blend)."""
     as_choice(method, "method", METHODS + ("fairest",))
-    curve, reversed_, boundary, margin, iterations = _kernel.monotone_spline(
+    curve, reversed_, boundary, margin, iterations = kernel.monotone_spline(
         as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"),
         _KERNEL_METHODS[method], as_real(grid_step, "grid_step", positive=True)
     )
@@ -100,14 +100,14 @@ def monotone_curvature_design(first_vector, differences, knots=None, start=None)
     differences: N >= 2 vectors in the XY plane; knots: the full knot vector t_0..t_(N+5)
     (default: clamped, uniform inside). Returns a Part.BSplineCurve in the XY plane.
     See clamp_to_fair_locations for the differences actually used."""
-    curve, _, _, _ = _kernel.design_monotone(*_design_inputs(first_vector, differences, knots, start))
+    curve, _, _, _ = kernel.design_monotone(*_design_inputs(first_vector, differences, knots, start))
     return to_part(curve)
 
 
 def clamp_to_fair_locations(first_vector, differences, knots=None):
     """The differences Algorithm 1 uses, as an (N, 2) array, and how far each was moved (N,)
     to reach its fair location (0 where it was kept as given)."""
-    _, used, moved, _ = _kernel.design_monotone(*_design_inputs(first_vector, differences, knots, None))
+    _, used, moved, _ = kernel.design_monotone(*_design_inputs(first_vector, differences, knots, None))
     return np.asarray(used), np.asarray(moved)
 
 
@@ -185,14 +185,14 @@ def check_monotone_curvature(curve, rel_tol=1e-12):
     span; for non-periodic polynomial cubics also the paper's Lemmas 1-3 per segment.
     Raises InputError for a non-planar curve."""
     kernel_curve = from_part(curve)
-    return report_from_certificate(_kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0)), kernel_curve)
+    return report_from_certificate(kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0)), kernel_curve)
 
 
 def report_from_certificate(cert, kernel_curve):
     """The MonotonicityReport of the kernel's certificate (a dict) of kernel_curve."""
     paper = [None] * len(cert["spans"])
     if kernel_curve.degree == 3 and not kernel_curve.rational and not kernel_curve.periodic:
-        paper = [s["reason"] for s in _kernel.check_segments(kernel_curve)]
+        paper = [s["reason"] for s in kernel.check_segments(kernel_curve)]
     spans = []
     for i, (s, p) in enumerate(zip(cert["spans"], paper)):
         extremum = (s["at"], s["kappa_at"], bool(s["maximum"])) if s["trend"] == "extremum" else None
@@ -214,11 +214,11 @@ def report_from_certificate(cert, kernel_curve):
 def curvature_variation(curve):
     """Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds of a planar curve: 0 for
     lines and circles, small for fair spirals. Used to compare solvers."""
-    return float(_kernel.curvature_variation(from_part(curve)))
+    return float(kernel.curvature_variation(from_part(curve)))
 
 
 def derivative_polygons(curve):
     """Eqs. (3) and (5): the control points C^1_i of P' and C^2_i of P'' of a non-periodic,
     non-rational cubic B-spline, as two arrays."""
-    first, second = _kernel.derivative_polygons(from_part(curve))
+    first, second = kernel.derivative_polygons(from_part(curve))
     return np.asarray(first), np.asarray(second)

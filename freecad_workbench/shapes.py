@@ -9,7 +9,7 @@ Part.BSplineSurface objects and feeds fw.blend_basic_shape.
 """
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .basic import _frame, _vector3
 from .errors import InputError
 from .kernel import as_choice, as_real, surface_to_part
@@ -33,6 +33,14 @@ def _check_partition(around, along):
     if patches > MAX_SHAPE_PATCHES:
         raise InputError(f"the partition has {len(around)} by {len(along)} angles or heights: {patches} patches, "
                          f"more than {MAX_SHAPE_PATCHES}; use fewer")
+
+
+def require_shape(shape):
+    """The shape itself when it is one of SphereZone, Cylinder, Cone, Torus (what the blends
+    take); InputError naming what it is otherwise."""
+    if not isinstance(shape, _Shape):
+        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
+    return shape
 
 
 class _Shape:
@@ -127,10 +135,10 @@ class SphereZone(_Shape):
         return self.longitudes
 
     def g2(self):
-        return _kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
+        return kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
 
     def _revolution(self):
-        return _kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes, self.latitudes)
+        return kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes, self.latitudes)
 
     def pole_at(self, end):
         latitude = self.latitudes[-1] if as_choice(end, "end", ("start", "end")) == "end" else self.latitudes[0]
@@ -153,10 +161,10 @@ class Cylinder(_Shape):
         return self.angles
 
     def g2(self):
-        return _kernel.cylinder(*self._frame_args(), self.radius, self.angles, self.heights)
+        return kernel.cylinder(*self._frame_args(), self.radius, self.angles, self.heights)
 
     def _revolution(self):
-        return _kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius, 0.0, self.angles, self.heights)
+        return kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius, 0.0, self.angles, self.heights)
 
 
 class Cone(_Shape):
@@ -175,10 +183,10 @@ class Cone(_Shape):
         return self.angles
 
     def g2(self):
-        return _kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
+        return kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
 
     def _revolution(self):
-        return _kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
+        return kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
 
 
 class Torus(_Shape):
@@ -199,10 +207,10 @@ class Torus(_Shape):
         return self.angles_u
 
     def g2(self):
-        return _kernel.torus(*self._frame_args(), self.major_radius, self.minor_radius, self.angles_u, self.angles_v)
+        return kernel.torus(*self._frame_args(), self.major_radius, self.minor_radius, self.angles_u, self.angles_v)
 
     def _revolution(self):
-        return _kernel.ShapeOfRevolution("torus", *self._frame_args(), self.major_radius, self.minor_radius,
+        return kernel.ShapeOfRevolution("torus", *self._frame_args(), self.major_radius, self.minor_radius,
                                          self.angles_u, self.angles_v)
 
 

@@ -27,7 +27,7 @@ import FreeCAD
 import Part
 
 from .. import preferences
-from ..curves import PARAMETRIZATIONS, csr_spline
+from ..csr import PARAMETRIZATIONS, csr_spline
 from ..errors import InputError
 from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step

@@ -3,11 +3,11 @@ splines and design with basic curves") and the baselines they are compared with.
 Every function returns a FreeCAD ``Part.BSplineCurve``."""
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .kernel import adopt, as_choice, as_flag, as_points, as_real, as_reals, has_bridge, to_part
 
 PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
-EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
+EPSILON_RULES = {"case": kernel.EpsilonRule.CaseDistinction, "additive": kernel.EpsilonRule.Additive}
 _NO_PARAMETERS = np.zeros(0)  # read only by the kernel
 
 
@@ -36,25 +36,25 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
     t = _NO_PARAMETERS if parameters is None else as_reals(parameters, "parameters")
     args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False), EPSILON_RULES[epsilon_rule], t)
     if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
-        return adopt(_kernel.csr_edge_capsule(*args)).Edge1.Curve
-    return to_part(_kernel.csr_spline(*args))
+        return adopt(kernel.csr_edge_capsule(*args)).Edge1.Curve
+    return to_part(kernel.csr_spline(*args))
 
 
 def interpolate_classic(points, closed=False, parametrization="chordal"):
     """Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate), the baseline."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
+    return to_part(kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
 def quasi_interpolant(points, closed=False, parametrization="chordal"):
     """The cubic quasi-interpolant, (-1, 8, -1)/6 for uniform parameters (Fig. 2e)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quasi_interpolant(as_points(points), as_flag(closed, "closed"), parametrization))
+    return to_part(kernel.quasi_interpolant(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
 def control_point_spline(points, closed=False):
     """The cubic B-spline that uses the data as control points (Fig. 2f, red)."""
-    return to_part(_kernel.control_point_spline(as_points(points), as_flag(closed, "closed")))
+    return to_part(kernel.control_point_spline(as_points(points), as_flag(closed, "closed")))
 
 
 def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e-9):
@@ -62,5 +62,5 @@ def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e
     {q_i, m_i, q_(i+1)} whose handles m_i are the poles between the data points.
     Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
+    return to_part(kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
                                              as_real(epsilon, "epsilon", finite=False)))
