@@ -16,11 +16,17 @@ whose end is the pole).
     post = fw.shapes.Cylinder((0, 0, 0), 1, longitudes, [0, 1, 2])
     joined = fw.join_basic_shapes(post, dome)   # Figs. 9-12: basic shape to basic shape
 """
+from __future__ import annotations
+
+from typing import Optional
+
+import numpy as np
+
 from . import kernel
 from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, freeform_knots_c1
 from .errors import InputError
-from .kernel import BlendResult, as_choice, blend_result, surface_from_part
-from .shapes import Cone, Cylinder, SphereZone, require_shape
+from .kernel import BlendResult, SurfaceLike, as_choice, blend_result, surface_from_part
+from .shapes import BasicShape, Cone, Cylinder, SphereZone, require_shape
 
 _METHODS = ("rho", "sigma", "mixed")
 
@@ -50,7 +56,7 @@ def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
 
 
-def freeform_knots(shape, method="rho", continuity="C2"):
+def freeform_knots(shape: BasicShape, method: str = "rho", continuity: str = "C2") -> np.ndarray:
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
     arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
     "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
@@ -83,7 +89,8 @@ def _complex(shape, freeform, method, naive, at):
                                ring, True, naive, at)
 
 
-def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=None):
+def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
+                      method: str = "rho", at: Optional[str] = None) -> BlendResult:
     """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
     periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its first
     row near the interface, on any knots: they are merged with the shape's), or to a
@@ -107,7 +114,8 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     return blend_result(_complex(shape, freeform, method, False, _interface(shape, at)))
 
 
-def blend_naive(shape, freeform=None, continuity="C2", at=None):
+def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
+                at: Optional[str] = None) -> BlendResult:
     """The naive baseline of Fig. 2a: direct second-order Hermite interpolation of the G2
     shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
     the partition's beta do not match: its .surface is None. continuity "C1": the G1
@@ -120,7 +128,8 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
     return blend_result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
-def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
+def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str = "C2",
+                      method: str = "rho") -> BlendResult:
     """Basic shape to basic shape (Figs. 9, 11, 12): the end of shape_a's profile joined to
     the start of shape_b's by one C2 transition row of degree (6,5) (C1: a (4,2) double
     strip); both stay exact. Both need a full turn around their axis (or both a partial
@@ -137,7 +146,7 @@ def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 
-def join_naive(shape_a, shape_b):
+def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     """The Fig. 2a baseline between two basic shapes: the G2 patches as they are and a (3,5)
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")

@@ -14,15 +14,19 @@ exists) and stay exactly on the shape. The free-form side is a biquadratic C1 ri
 periodic in u on the knots of freeform_knots(shape, continuity="C1"), clamped in v, its
 first row where the transition ends. A double strip of degree (4,2) joins them C1.
 """
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
 import numpy as np
 
 from . import kernel
 from .errors import InputError
-from .kernel import blend_result, surface_from_part
-from .shapes import require_shape
+from .kernel import BlendResult, SurfaceLike, blend_result, surface_from_part
+from .shapes import BasicShape, require_shape
 
 
-def freeform_knots_c1(shape, beta_t=None):
+def freeform_knots_c1(shape: BasicShape, beta_t: Optional[Sequence[float]] = None) -> np.ndarray:
     """The u knots (one period) a biquadratic ring must have to join `shape` with C1: the
     arc knots of eq. (12), intervals in the ratios beta = sin(alpha_i/2)/sin(alpha_{i-1}/2)
     (or beta_t)."""
@@ -41,7 +45,8 @@ def _beta_t(shape, beta_t):
     return values
 
 
-def complex_c1(shape, freeform=None, beta_t=None, naive=False, at="end"):
+def complex_c1(shape: BasicShape, freeform: Optional[SurfaceLike] = None, beta_t: Optional[Sequence[float]] = None,
+               naive: bool = False, at: str = "end") -> kernel.BlendComplex:
     """The kernel's BlendComplex of Section 5 (smoothness 1) for `shape` and a biquadratic
     Part.BSplineSurface ring (or None for the default ring). beta_t: new continuity scalars
     around the axis (beta_t[i] between arcs i-1 and i, multiplying to 1), None for beta.
@@ -52,14 +57,15 @@ def complex_c1(shape, freeform=None, beta_t=None, naive=False, at="end"):
     return kernel.blend_c1(shape._revolution(), ring, _beta_t(shape, beta_t), True, naive, at)
 
 
-def blend_basic_shape_c1(shape, freeform=None, beta_t=None, at="end"):
+def blend_basic_shape_c1(shape: BasicShape, freeform: Optional[SurfaceLike] = None,
+                         beta_t: Optional[Sequence[float]] = None, at: str = "end") -> BlendResult:
     """Section 5: `shape` joined at the end of its profile to a biquadratic C1 ring (or the
     default one) by a C1 (4,2) double strip. Returns a BlendResult (patches, shell, surface).
     beta_t as for complex_c1 (a user ring then needs freeform_knots_c1(shape, beta_t))."""
     return blend_result(complex_c1(shape, freeform, beta_t, at=at))
 
 
-def blend_naive_c1(shape, freeform=None, at="end"):
+def blend_naive_c1(shape: BasicShape, freeform: Optional[SurfaceLike] = None, at: str = "end") -> BlendResult:
     """The C1 baseline: the G1 shape's arcs split at their middle and degree-raised to 4
     without the eta reparameterization, the same (4,2) double strip. Its seams along the
     strip are not C1 in homogeneous space, so it has no single C1 surface (.surface None)."""

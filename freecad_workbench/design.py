@@ -1,16 +1,22 @@
 """Design with basic curves (csr paper, Sections 5, 6 and Fig. 9): basic curve pieces
 with marks to one non-uniform cubic C2 NURBS that keeps the pieces exact between the
 marks, rounds off the transitions, and whose control polygon can be edited freely."""
+from __future__ import annotations
+
 import math
 import numbers
 from collections import namedtuple
+from typing import TYPE_CHECKING, Any, Sequence, Union
 
 import numpy as np
 
 from . import kernel
 from .basic import BasicCurve, from_edge
 from .errors import InputError
-from .kernel import as_count, as_flag, as_real, from_part, to_part
+from .kernel import CurveLike, VectorLike, as_count, as_flag, as_real, from_part, to_part
+
+if TYPE_CHECKING:
+    import Part
 
 DesignResult = namedtuple("DesignResult", "curve joins ranges marks marks_added")
 DesignResult.__doc__ = (
@@ -47,7 +53,8 @@ def _piece(item, index):
     return curve, marks
 
 
-def design_spline(pieces, join_tolerance=1e-6, details=False):
+def design_spline(pieces: Sequence[tuple[Union[BasicCurve, Part.Edge], Sequence[Any]]], join_tolerance: float = 1e-6,
+                  details: bool = False) -> Union[Part.BSplineCurve, DesignResult]:
     """One cubic C2 NURBS from basic curve pieces with marks.
 
     pieces: list of (basic_curve, marks); basic_curve is a fw.basic curve or a FreeCAD
@@ -82,7 +89,8 @@ def design_spline(pieces, join_tolerance=1e-6, details=False):
     return DesignResult(part, joins, ranges, [p.marks for p in polygons], [p.marks_added for p in polygons])
 
 
-def revolve_profile(curve, axis_point=(0, 0, 0), axis_direction=(0, 0, 1)):
+def revolve_profile(curve: CurveLike, axis_point: VectorLike = (0, 0, 0),
+                    axis_direction: VectorLike = (0, 0, 1)) -> Part.BSplineSurface:
     """The exact surface of revolution of a profile (Part curve or edge, e.g. a designed
     spline) about an axis: a Part.BSplineSurface, the profile's NURBS in u times a
     rational circle in v (the paper's profile test)."""
@@ -101,7 +109,7 @@ ApproximationError.__doc__ = (
 )
 
 
-def approximation_error(curve, marks, samples=40):
+def approximation_error(curve: BasicCurve, marks: Sequence[Any], samples: int = 40) -> ApproximationError:
     """Measure the Section 5 approximation of a basic curve with the given marks.
 
     The quintic pieces are evaluated for all pieces and samples at once (numpy), so the

@@ -4,11 +4,18 @@ Every other module of the macro layer reaches the compiled functions through the
 below, grouped by the capability that calls them, and hands results over to FreeCAD with
 to_part, surface_to_part, adopt and blend_result. ``_kernel.pyi`` types the compiled module.
 """
+from __future__ import annotations
+
 import math
 import numbers
 from collections import namedtuple
+from typing import TYPE_CHECKING, Any, Sequence, Union
 
 import numpy as np
+
+if TYPE_CHECKING:  # names of the annotations only: FreeCAD and Part load when a function needs them
+    import FreeCAD
+    import Part
 
 try:
     from . import _kernel
@@ -30,6 +37,13 @@ NoMonotoneSolution.__doc__ = (
     "(a subclass of InputError)."
 )
 
+# The argument types of the macro API, for its annotations (the as_* functions below check
+# the values). FreeCAD 0.20 does not export Part's curve base class: a curve is Any there.
+PointsLike = Union[np.ndarray, Sequence[Any]]  #: FreeCAD Vectors, Part Vertexes, tuples, an (N, 2)/(N, 3) array
+VectorLike = Union["FreeCAD.Vector", "Part.Vertex", Sequence[float], np.ndarray]  #: one point or direction
+CurveLike = Union["Part.Edge", "Part.Shape", "Part.BSplineCurve", Any]  #: a Part curve or edge
+SurfaceLike = Union["Part.BSplineSurface", "Part.Face", "Part.Shape"]  #: a B-spline surface or a face on one
+
 # The compiled functions and classes, by the capability (module) that calls them.
 # Kernel curves and surfaces (hand-over, here and in analysis.py).
 BSplineCurve = _kernel.BSplineCurve
@@ -43,6 +57,7 @@ quasi_interpolant = _kernel.quasi_interpolant
 control_point_spline = _kernel.control_point_spline
 quadratic_design = _kernel.quadratic_design
 # Basic curves (basic.py).
+BasicCurve = _kernel.BasicCurve
 line_segment = _kernel.line_segment
 CircleArc = _kernel.CircleArc
 ellipse_arc = _kernel.ellipse_arc
@@ -79,6 +94,8 @@ cylinder = _kernel.cylinder
 cone = _kernel.cone
 torus = _kernel.torus
 ShapeOfRevolution = _kernel.ShapeOfRevolution
+G2Surface = _kernel.G2Surface
+BlendComplex = _kernel.BlendComplex
 # Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
 ring_knots = _kernel.ring_knots
 blend_sphere_zone = _kernel.blend_sphere_zone

@@ -11,15 +11,20 @@ certificate that any planar B-spline or Bezier curve has monotone curvature.
 Curvature is signed about the curve's plane normal (counter-clockwise turning positive), so
 `increasing` and `decreasing` refer to the signed curvature along the curve's parameter.
 """
+from __future__ import annotations
+
 import re
 from dataclasses import dataclass
-from typing import Optional, Tuple
+from typing import TYPE_CHECKING, Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import kernel
 from .errors import InputError
-from .kernel import as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
+from .kernel import CurveLike, PointsLike, VectorLike, as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
+
+if TYPE_CHECKING:
+    import Part
 
 # The paper's Algorithm 2: "paper" solves for the analytic centre of the family's admissible
 # set (called "fairest" before fair blends existed; still accepted), "grid" is the paper's
@@ -41,7 +46,7 @@ class EndConditions:
     reason: str  #: why not admissible ('' when admissible)
 
 
-def monotone_end_conditions(p0, t0, p1, t1):
+def monotone_end_conditions(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike) -> EndConditions:
     """Classify G1 end conditions: admissible when the end tangents meet at M ahead of p0 and
     behind p1, turn by less than 90 degrees, and min(a, b) <= max(a, b) cos(turn) with
     a = |M - p0|, b = |p1 - M| (equality: a parabola from its vertex). Raises InputError on bad
@@ -61,7 +66,8 @@ class MonotoneSolution:
     iterations: int  #: Newton iterations, or grid points tried
 
 
-def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
+def monotone_curvature_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike, method: str = "paper",
+                                grid_step: float = 0.02) -> MonotoneSolution:
     """The paper's Algorithm 2 with the solver's diagnostics: a MonotoneSolution whose curve is
     a planar cubic B-spline (5 poles, knots 0, 1, 2 with multiplicities 4, 1, 4) from p0 with
     direction t0 to p1 with direction t1, verified by Theorem 1 and the exact certificate.
@@ -90,7 +96,8 @@ def _design_inputs(first_vector, differences, knots, start):
     return first[:2].copy(), np.ascontiguousarray(diffs[:, :2]), t, origin
 
 
-def monotone_curvature_design(first_vector, differences, knots=None, start=None):
+def monotone_curvature_design(first_vector: VectorLike, differences: PointsLike, knots: Optional[Sequence[float]] = None,
+                              start: Optional[VectorLike] = None) -> Part.BSplineCurve:
     """Algorithm 1: the cubic B-spline with control points C_0 = start (default origin),
     C_1 = C_0 + V_0, C_{i+1} = C_i + V_i, V_0 = first_vector, V_{i+1} = V_i + dV_i.
 
@@ -104,7 +111,8 @@ def monotone_curvature_design(first_vector, differences, knots=None, start=None)
     return to_part(curve)
 
 
-def clamp_to_fair_locations(first_vector, differences, knots=None):
+def clamp_to_fair_locations(first_vector: VectorLike, differences: PointsLike,
+                            knots: Optional[Sequence[float]] = None) -> tuple[np.ndarray, np.ndarray]:
     """The differences Algorithm 1 uses, as an (N, 2) array, and how far each was moved (N,)
     to reach its fair location (0 where it was kept as given)."""
     _, used, moved, _ = kernel.design_monotone(*_design_inputs(first_vector, differences, knots, None))
@@ -176,7 +184,7 @@ class MonotonicityReport:
         return "\n".join(lines)
 
 
-def check_monotone_curvature(curve, rel_tol=1e-12):
+def check_monotone_curvature(curve: CurveLike, rel_tol: float = 1e-12) -> MonotonicityReport:
     """Exact certificate that a planar curve (Part.BSplineCurve, Part.BezierCurve, any Part
     curve or edge, converted exactly to a B-spline; polynomial or rational) has monotone
     curvature. Per knot span the sign of kappa' is the sign of one polynomial, decided from
@@ -211,13 +219,13 @@ def report_from_certificate(cert, kernel_curve):
     )
 
 
-def curvature_variation(curve):
+def curvature_variation(curve: CurveLike) -> float:
     """Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds of a planar curve: 0 for
     lines and circles, small for fair spirals. Used to compare solvers."""
     return float(kernel.curvature_variation(from_part(curve)))
 
 
-def derivative_polygons(curve):
+def derivative_polygons(curve: CurveLike) -> tuple[np.ndarray, np.ndarray]:
     """Eqs. (3) and (5): the control points C^1_i of P' and C^2_i of P'' of a non-periodic,
     non-rational cubic B-spline, as two arrays."""
     first, second = kernel.derivative_polygons(from_part(curve))
