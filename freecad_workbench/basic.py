@@ -144,7 +144,7 @@ class CircleArc(BasicCurve):
         self.end_angle = as_real(end_angle, "end_angle", finite=False)
         super().__init__(
             kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
-                              self.end_angle - self.start_angle)
+                             self.end_angle - self.start_angle)
         )
 
     def to_part(self) -> Union[Part.ArcOfCircle, Part.BSplineCurve]:
@@ -174,7 +174,7 @@ class EllipseArc(BasicCurve):
         self.start = as_real(start, "start", finite=False)
         self.end = as_real(end, "end", finite=False)
         super().__init__(kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
-                                             self.end - self.start))
+                                            self.end - self.start))
 
 
 class ParabolaArc(BasicCurve):
@@ -185,7 +185,8 @@ class ParabolaArc(BasicCurve):
                  normal: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
         self.vertex = _vector3(vertex, "vertex")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.focal, self.t0, self.t1 = as_real(focal, "focal", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
+        self.focal = as_real(focal, "focal", finite=False)
+        self.t0, self.t1 = as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
 
 
@@ -272,7 +273,8 @@ class CircleInvolute(_Transcendental):
                  normal: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.radius, self.t0, self.t1 = as_real(radius, "radius", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
+        self.radius = as_real(radius, "radius", finite=False)
+        self.t0, self.t1 = as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(
             kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
         )

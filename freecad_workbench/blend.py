@@ -86,20 +86,21 @@ def _complex(shape, freeform, method, naive, at):
         radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
         return kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
     return kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
-                               ring, True, naive, at)
+                              ring, True, naive, at)
 
 
 def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
                       method: str = "rho", at: Optional[str] = None) -> BlendResult:
     """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
-    periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its first
-    row near the interface, on any knots: they are merged with the shape's), or to a
-    default ring that continues the shape, with a C2 transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
-    or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
-    start where the end is a pole). A shape edited with shape.set_control (Fig. 1c/d) is
-    joined as edited: C2 along the interface and across the strip, the rows across the
-    profile G2 (its .surface is then None). continuity "C1": Section 5, a biquadratic ring
-    and a (4,2) double strip (blend_c1.py; method unused)."""
+    periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its
+    first row near the interface, on any knots: they are merged with the shape's), or to
+    a default ring that continues the shape, with a C2 transition strip of degree (6,5).
+    The basic shape stays exact. method: 'rho', 'sigma' or 'mixed' (Section 3). at:
+    'end' or 'start' of the profile (None: the end, or the start where the end is a
+    pole). A shape edited with shape.set_control (Fig. 1c/d) is joined as edited: C2
+    along the interface and across the strip, the rows across the profile G2 (its
+    .surface is then None). continuity "C1": Section 5, a biquadratic ring and a (4,2)
+    double strip (blend_c1.py; method unused)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
         _check(shape, continuity, method)
@@ -151,7 +152,8 @@ def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")
     _check(shape_b, "C2", "rho")
-    return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True), single=False)
+    complex_ = kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True)
+    return blend_result(complex_, single=False)
 
 
 __all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots", "join_basic_shapes", "join_naive"]

@@ -41,7 +41,8 @@ def _beta_t(shape, beta_t):
     except (TypeError, ValueError):
         raise InputError("beta_t must be a list of numbers, one per arc around the axis") from None
     if values.size != len(shape.around) - 1:
-        raise InputError(f"beta_t needs one scalar per arc around the axis ({len(shape.around) - 1}), not {values.size}")
+        raise InputError(f"beta_t needs one scalar per arc around the axis ({len(shape.around) - 1}), "
+                         f"not {values.size}")
     return values
 
 

@@ -42,13 +42,15 @@ def csr_spline(points: PointsLike, closed: bool = False, parametrization: str = 
     as_choice(epsilon_rule, "epsilon_rule", EPSILON_RULES)
     q = as_points(points)
     t = _NO_PARAMETERS if parameters is None else as_reals(parameters, "parameters")
-    args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False), EPSILON_RULES[epsilon_rule], t)
+    args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False),
+            EPSILON_RULES[epsilon_rule], t)
     if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
         return adopt(kernel.csr_edge_capsule(*args)).Edge1.Curve
     return to_part(kernel.csr_spline(*args))
 
 
-def interpolate_classic(points: PointsLike, closed: bool = False, parametrization: str = "chordal") -> Part.BSplineCurve:
+def interpolate_classic(points: PointsLike, closed: bool = False,
+                        parametrization: str = "chordal") -> Part.BSplineCurve:
     """Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate), the baseline."""
     _check_parametrization(parametrization)
     return to_part(kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
@@ -72,4 +74,4 @@ def quadratic_design(points: PointsLike, closed: bool = False, parametrization: 
     Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
     _check_parametrization(parametrization)
     return to_part(kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
-                                             as_real(epsilon, "epsilon", finite=False)))
+                                            as_real(epsilon, "epsilon", finite=False)))

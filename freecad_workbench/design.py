@@ -98,11 +98,12 @@ def revolve_profile(curve: CurveLike, axis_point: VectorLike = (0, 0, 0),
     from .kernel import surface_to_part
 
     surface = kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
-                              _vector3(axis_direction, "axis_direction"))
+                             _vector3(axis_direction, "axis_direction"))
     return surface_to_part(surface)
 
 
-ApproximationError = namedtuple("ApproximationError", "quintic_position quintic_curvature cubic_position cubic_curvature")
+ApproximationError = namedtuple("ApproximationError",
+                                "quintic_position quintic_curvature cubic_position cubic_curvature")
 ApproximationError.__doc__ = (
     "Largest deviation from a basic curve, at equal parameters, of the quintics of eq. (7) and of the cubic "
     "C2 spline (Section 5), in position and in curvature, over [u_2, u_(m-2)] for the spline."

@@ -270,4 +270,3 @@ def fair_blend(edge_a: CurveLike, end_a: Union[str, Part.Vertex, VectorLike], ed
             normal /= np.linalg.norm(normal)
         k0, k1 = _signed_curvature(a, normal), _signed_curvature(b, normal)
     return fair_blend_solution(a.point, a.tangent, b.point, b.tangent, k0, k1, normal)
-

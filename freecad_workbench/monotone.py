@@ -21,7 +21,8 @@ import numpy as np
 
 from . import kernel
 from .errors import InputError
-from .kernel import CurveLike, PointsLike, VectorLike, as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
+from .kernel import (CurveLike, PointsLike, VectorLike, as_choice, as_points, as_real, as_reals, as_vector, from_part,
+                     to_part)
 
 if TYPE_CHECKING:
     import Part
@@ -51,7 +52,8 @@ def monotone_end_conditions(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: 
     behind p1, turn by less than 90 degrees, and min(a, b) <= max(a, b) cos(turn) with
     a = |M - p0|, b = |p1 - M| (equality: a parabola from its vertex). Raises InputError on bad
     input (a zero tangent, coincident points, NaN)."""
-    info = kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"))
+    info = kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"),
+                                         as_vector(t1, "t1"))
     return EndConditions(**info)
 
 
@@ -96,7 +98,8 @@ def _design_inputs(first_vector, differences, knots, start):
     return first[:2].copy(), np.ascontiguousarray(diffs[:, :2]), t, origin
 
 
-def monotone_curvature_design(first_vector: VectorLike, differences: PointsLike, knots: Optional[Sequence[float]] = None,
+def monotone_curvature_design(first_vector: VectorLike, differences: PointsLike,
+                              knots: Optional[Sequence[float]] = None,
                               start: Optional[VectorLike] = None) -> Part.BSplineCurve:
     """Algorithm 1: the cubic B-spline with control points C_0 = start (default origin),
     C_1 = C_0 + V_0, C_{i+1} = C_i + V_i, V_0 = first_vector, V_{i+1} = V_i + dV_i.
@@ -193,7 +196,8 @@ def check_monotone_curvature(curve: CurveLike, rel_tol: float = 1e-12) -> Monoto
     span; for non-periodic polynomial cubics also the paper's Lemmas 1-3 per segment.
     Raises InputError for a non-planar curve."""
     kernel_curve = from_part(curve)
-    return report_from_certificate(kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0)), kernel_curve)
+    certificate = kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0))
+    return report_from_certificate(certificate, kernel_curve)
 
 
 def report_from_certificate(cert, kernel_curve):

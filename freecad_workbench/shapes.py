@@ -46,7 +46,8 @@ def require_shape(shape: Any) -> BasicShape:
     """The shape itself when it is one of SphereZone, Cylinder, Cone, Torus (what the blends
     take); InputError naming what it is otherwise."""
     if not isinstance(shape, _Shape):
-        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
+        raise InputError("shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, "
+                         f"not {type(shape).__name__}")
     return shape
 
 
@@ -146,7 +147,8 @@ class SphereZone(_Shape):
         return kernel.sphere_zone(*self._frame_args(), self.radius, self.longitudes, self.latitudes)
 
     def _revolution(self):
-        return kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes, self.latitudes)
+        return kernel.ShapeOfRevolution("sphere", *self._frame_args(), self.radius, 0.0, self.longitudes,
+                                        self.latitudes)
 
     def pole_at(self, end: str) -> bool:
         latitude = self.latitudes[-1] if as_choice(end, "end", ("start", "end")) == "end" else self.latitudes[0]
@@ -196,7 +198,8 @@ class Cone(_Shape):
         return kernel.cone(*self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
 
     def _revolution(self):
-        return kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius0, self.slope, self.angles, self.heights)
+        return kernel.ShapeOfRevolution("cone", *self._frame_args(), self.radius0, self.slope, self.angles,
+                                        self.heights)
 
 
 class Torus(_Shape):
@@ -222,7 +225,7 @@ class Torus(_Shape):
 
     def _revolution(self):
         return kernel.ShapeOfRevolution("torus", *self._frame_args(), self.major_radius, self.minor_radius,
-                                         self.angles_u, self.angles_v)
+                                        self.angles_u, self.angles_v)
 
 
 # What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).

@@ -49,6 +49,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class CsrFit(FeatureProxy):
     """Proxy of a Part::FeaturePython holding a csr-spline fitted to its Sources."""
 
