@@ -74,4 +74,4 @@ def quadratic_design(points: PointsLike, closed: bool = False, parametrization: 
     Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
     _check_parametrization(parametrization)
     return to_part(kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
-                                            as_real(epsilon, "epsilon", finite=False)))
+                                           as_real(epsilon, "epsilon", finite=False)))

@@ -414,7 +414,7 @@ seed("fuzz_blend_surface", "sphere_zone_rho", tail(options(revolution(Enc().choi
 seed("fuzz_blend_surface", "sphere_zone_naive",
      tail(options(revolution(Enc().choice(0), 0, 6, 1.0, sphere), naive=True)))
 seed("fuzz_blend_surface", "cone_sigma", tail(options(revolution(Enc().choice(1), 1, 6, 2.0,
-                                                                   lambda e: profile(e, [1.0, 1.0]), size1=0.25), 1)))
+                                                                 lambda e: profile(e, [1.0, 1.0]), size1=0.25), 1)))
 seed("fuzz_blend_surface", "torus_mixed_start",
      tail(options(revolution(Enc().choice(0), 2, 8, 3.0, lambda e: profile(e, [1.0, 1.0]), size1=0.25), 2,
                   start=True)))

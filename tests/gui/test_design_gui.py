@@ -184,7 +184,7 @@ def test_basic_curve_panel_edits_dimensions_and_plane_live(scene):
     edge = arc.Shape.Edges[0]
     assert edge.Curve.Radius == pytest.approx(12.5)
     assert (edge.valueAt(edge.LastParameter) - V(12.5 * math.cos(math.radians(135)),
-                                                  12.5 * math.sin(math.radians(135)), 0)).Length < 1e-12
+                                                 12.5 * math.sin(math.radians(135)), 0)).Length < 1e-12
     panel.plane.setCurrentIndex(1)  # XZ
     for spin, value in zip(panel.position, (1, 2, 3)):
         spin.setValue(value)
