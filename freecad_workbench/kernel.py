@@ -44,10 +44,8 @@ VectorLike = Union["FreeCAD.Vector", "Part.Vertex", Sequence[float], np.ndarray]
 CurveLike = Union["Part.Edge", "Part.Shape", "Part.BSplineCurve", Any]  #: a Part curve or edge
 SurfaceLike = Union["Part.BSplineSurface", "Part.Face", "Part.Shape"]  #: a B-spline surface or a face on one
 
-# The compiled functions and classes, by the capability (module) that calls them.
-# Kernel curves and surfaces (hand-over, here and in analysis.py).
-BSplineCurve = _kernel.BSplineCurve
-make_bspline_surface = _kernel.make_bspline_surface
+# The compiled functions and classes, by the capability (module) that calls them (the
+# hand-over functions below call the kernel's curve and surface constructors themselves).
 # csr fitting (csr.py).
 EpsilonRule = _kernel.EpsilonRule
 csr_spline = _kernel.csr_spline
