@@ -19,7 +19,7 @@ SANITIZED_CMAKE = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo
                   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g"
 
 .PHONY: deps deps-sanitizers build install demo test test-cpp test-python run bench clean \
-        test-freecad-1.0 test-freecad-1.1 test-matrix translations fuzz test-sanitize
+        test-freecad-1.0 test-freecad-1.1 test-matrix translations fuzz test-sanitize lint
 
 deps:
 	@bash tools/install-deps.sh
@@ -96,3 +96,9 @@ clean:
 # QT_TRANSLATE_NOOP() in the sources (tests/toolchain/test_translations.py checks it is current).
 translations:
 	$(PYTHON) tools/update_translations.py
+
+# flake8 over every Python file of the repository (configuration: .flake8, 120 columns);
+# Debian's python3-flake8, which make deps installs.
+PY_SOURCES = freecad_workbench tests bench tools demo fuzz Init.py InitGui.py
+lint: deps
+	$(PYTHON) -m flake8 $(PY_SOURCES)

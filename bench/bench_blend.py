@@ -87,8 +87,8 @@ def _normal_curvature(su, sv, second, d):
     """Normal curvature in the (tangent-plane projected) direction d."""
     e, f, g = su.dot(su), su.dot(sv), sv.dot(sv)
     a, b = np.linalg.solve([[e, f], [f, g]], [d.dot(su), d.dot(sv)])
-    l, m, n = second
-    return (l * a * a + 2 * m * a * b + n * b * b) / (e * a * a + 2 * f * a * b + g * b * b)
+    L, M, N = second
+    return (L * a * a + 2 * M * a * b + N * b * b) / (e * a * a + 2 * f * a * b + g * b * b)
 
 
 def seam_deviation(edge, support, other):
@@ -137,7 +137,8 @@ def _cell(edge):
 def seams(zone):
     """The zone's top edges and the ring's bottom edges with their faces."""
     result = fw.blend_basic_shape(zone)
-    faces = {role: [Part.Face(s) for r, s in result.patches if r == role] for role in ("basic", "transition", "freeform")}
+    faces = {role: [Part.Face(s) for r, s in result.patches if r == role]
+             for role in ("basic", "transition", "freeform")}
     z_top = zone.radius * math.sin(zone.latitudes[-1])
     z_ring = min(v.Point.z for f in faces["freeform"] for v in f.Vertexes)
     return result, faces, _edges_at_height(faces["basic"], z_top), _edges_at_height(faces["freeform"], z_ring)

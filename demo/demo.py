@@ -141,7 +141,8 @@ def monotone_blend(doc, out, lines):
     report = fw.check_monotone_curvature(curve)
     ends = [curve.value(curve.FirstParameter), curve.value(curve.LastParameter)]
     hermite = Part.BSplineCurve()
-    hermite.interpolate([ends[0], FreeCAD.Vector(5.6, 1.9, 0), ends[1]], InitialTangent=curve.tangent(curve.FirstParameter)[0],
+    hermite.interpolate([ends[0], FreeCAD.Vector(5.6, 1.9, 0), ends[1]],
+                        InitialTangent=curve.tangent(curve.FirstParameter)[0],
                         FinalTangent=curve.tangent(curve.LastParameter)[0])
     lines += ["", "Monotone-curvature blend (Algorithm 2, fairest admissible curve)",
               f"  certificate: monotone={report.monotone}, increasing={report.increasing}, "
@@ -189,7 +190,8 @@ def fair_blend(doc, out, lines):
     lines += ["", "Fair blend, G2: a line into a circle arc (radius 10)",
               f"  certificate: monotone={report.monotone}, increasing={report.increasing}; "
               f"spans: {len(curve.getKnots()) - 1}; curvature extrema inside: {len(fw.curvature_extrema(curve))}",
-              f"  end curvatures: {curve.curvature(curve.FirstParameter):.3g} and {curve.curvature(curve.LastParameter):.6g}",
+              f"  end curvatures: {curve.curvature(curve.FirstParameter):.3g} and "
+              f"{curve.curvature(curve.LastParameter):.6g}",
               f"  quintic Bezier with the same end derivatives: {len(fw.curvature_extrema(quintic))} curvature extrema"]
     curvature_plot([(curve, "fair blend (G2)"), (quintic, "quintic Bezier, same end derivatives")],
                    path=os.path.join(out, "fair_blend_curvature.png"),
@@ -330,13 +332,14 @@ def main():
     with open(os.path.join(out, "summary.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))
-    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png, monotone_curvature.png, fair_blend_curvature.png, blend_patches.png, blend_join.png and summary.txt in {out}")
+    print(f"\nwrote {path_doc}, fig2_curvature.png, fig2_curves.png, design_curvature.png, monotone_curvature.png, "
+          f"fair_blend_curvature.png, blend_patches.png, blend_join.png and summary.txt in {out}")
     FreeCAD.closeDocument(doc.Name)
 
 
 try:
     main()
-except Exception as exc:  # report, and make freecadcmd's exit status say so
+except Exception:  # report, and make freecadcmd's exit status say so
     import traceback
 
     traceback.print_exc()

@@ -12,7 +12,7 @@ from ._freecad import ensure_freecad_path as _ensure_freecad_path
 _ensure_freecad_path()
 
 from .errors import InputError, NoMonotoneSolution  # noqa: E402
-from .curves import (  # noqa: E402
+from .csr import (  # noqa: E402
     csr_spline,
     interpolate_classic,
     quasi_interpolant,

@@ -10,13 +10,20 @@ FreeCAD has one, else a B-spline). Conics and rational cubics are converted exac
     arc = fw.basic.CircleArc(center=(0, 0, 0), radius=1, start_angle=0, end_angle=math.pi)
     arc.parameter_of(arc.value(0.3))   # 0.3
 """
+from __future__ import annotations
+
 import math
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError
-from .kernel import _require_bounded, as_real, as_reals, to_part
+from .kernel import CurveLike, PointsLike, VectorLike, as_real, as_reals, require_bounded, to_part
+
+if TYPE_CHECKING:
+    import FreeCAD
+    import Part
 
 __all__ = [
     "BasicCurve",
@@ -69,7 +76,7 @@ class BasicCurve:
 
     exact = True  # Section 6 applies (rational of degree <= 3)
 
-    def __init__(self, kernel_curve):
+    def __init__(self, kernel_curve: kernel.BasicCurve) -> None:
         self._curve = kernel_curve
         if not math.isfinite(kernel_curve.size()):
             raise InputError(f"the {type(self).__name__}'s size is not finite: its numbers are too large, too small "
@@ -85,26 +92,26 @@ class BasicCurve:
             raise InputError(f"{which}({u!r}) of the {type(self).__name__} is not finite: u is too far outside [0, 1]")
         return FreeCAD.Vector(*v)
 
-    def value(self, u):
+    def value(self, u: float) -> FreeCAD.Vector:
         return self._jet("value", u)
 
-    def d1(self, u):
+    def d1(self, u: float) -> FreeCAD.Vector:
         return self._jet("d1", u)
 
-    def d2(self, u):
+    def d2(self, u: float) -> FreeCAD.Vector:
         return self._jet("d2", u)
 
-    def parameter_of(self, point, tolerance=1e-9):
+    def parameter_of(self, point: VectorLike, tolerance: float = 1e-9) -> float:
         """u of a point on the curve; InputError if it is farther than tolerance x size."""
         return self._curve.parameter_of(_vector3(point, "point"), as_real(tolerance, "tolerance", minimum=0))
 
-    def size(self):
+    def size(self) -> float:
         return self._curve.size()
 
-    def to_part(self):
+    def to_part(self) -> Any:
         """FreeCAD geometry of the curve: an exact rational B-spline (subclasses with a
         native FreeCAD type return that instead)."""
-        curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, np.zeros(0))], 0.0)
+        curve, _, _ = kernel.merge_pieces([kernel.piece_polygon(self._curve, np.zeros(0))], 0.0)
         return to_part(curve)
 
     def __repr__(self):
@@ -112,11 +119,11 @@ class BasicCurve:
 
 
 class LineSegment(BasicCurve):
-    def __init__(self, start, end):
+    def __init__(self, start: VectorLike, end: VectorLike) -> None:
         self.start, self.end = _vector3(start, "start"), _vector3(end, "end")
-        super().__init__(_kernel.line_segment(self.start, self.end))
+        super().__init__(kernel.line_segment(self.start, self.end))
 
-    def to_part(self):
+    def to_part(self) -> Union[Part.LineSegment, Part.BSplineCurve]:
         """A Part.LineSegment; one longer than OCCT's lines hold (Precision::Infinite, 2e100)
         comes back as its exact degree-1 B-spline."""
         import FreeCAD
@@ -131,19 +138,20 @@ class CircleArc(BasicCurve):
     """Circle arc from start_angle to end_angle (radians, counter-clockwise about the
     normal when end > start, clockwise when end < start); angles from x_axis."""
 
-    def __init__(self, center=(0, 0, 0), radius=1.0, start_angle=0.0, end_angle=math.pi / 2, normal=(0, 0, 1),
-                 x_axis=None):
+    def __init__(self, center: VectorLike = (0, 0, 0), radius: float = 1.0, start_angle: float = 0.0,
+                 end_angle: float = math.pi / 2, normal: VectorLike = (0, 0, 1),
+                 x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.radius = as_real(radius, "radius", finite=False)
         self.start_angle = as_real(start_angle, "start_angle", finite=False)
         self.end_angle = as_real(end_angle, "end_angle", finite=False)
         super().__init__(
-            _kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
-                              self.end_angle - self.start_angle)
+            kernel.CircleArc(self.center, self.x_axis, self.y_axis, self.radius, self.start_angle,
+                             self.end_angle - self.start_angle)
         )
 
-    def to_part(self):
+    def to_part(self) -> Union[Part.ArcOfCircle, Part.BSplineCurve]:
         import FreeCAD
         import Part
 
@@ -160,48 +168,53 @@ class EllipseArc(BasicCurve):
     """Ellipse arc x = a cos t, y = b sin t in the frame (x_axis = major axis), t from
     start to end."""
 
-    def __init__(self, center=(0, 0, 0), major_radius=2.0, minor_radius=1.0, start=0.0, end=math.pi / 2,
-                 normal=(0, 0, 1), x_axis=None):
+    def __init__(self, center: VectorLike = (0, 0, 0), major_radius: float = 2.0, minor_radius: float = 1.0,
+                 start: float = 0.0, end: float = math.pi / 2, normal: VectorLike = (0, 0, 1),
+                 x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.a = as_real(major_radius, "major_radius", finite=False)
         self.b = as_real(minor_radius, "minor_radius", finite=False)
         self.start = as_real(start, "start", finite=False)
         self.end = as_real(end, "end", finite=False)
-        super().__init__(_kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
-                                             self.end - self.start))
+        super().__init__(kernel.ellipse_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.start,
+                                            self.end - self.start))
 
 
 class ParabolaArc(BasicCurve):
     """Parabola arc x = t^2 / (4 focal), y = t (FreeCAD's convention), t in [t0, t1];
     vertex at `vertex`, x_axis along the axis of symmetry."""
 
-    def __init__(self, vertex=(0, 0, 0), focal=1.0, t0=-1.0, t1=1.0, normal=(0, 0, 1), x_axis=None):
+    def __init__(self, vertex: VectorLike = (0, 0, 0), focal: float = 1.0, t0: float = -1.0, t1: float = 1.0,
+                 normal: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
         self.vertex = _vector3(vertex, "vertex")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.focal, self.t0, self.t1 = as_real(focal, "focal", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
-        super().__init__(_kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
+        self.focal = as_real(focal, "focal", finite=False)
+        self.t0, self.t1 = as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
+        super().__init__(kernel.parabola_arc(self.vertex, self.x_axis, self.y_axis, self.focal, self.t0, self.t1))
 
 
 class HyperbolaArc(BasicCurve):
     """Hyperbola arc x = a cosh t, y = b sinh t, t in [t0, t1]."""
 
-    def __init__(self, center=(0, 0, 0), major_radius=1.0, minor_radius=1.0, t0=-1.0, t1=1.0, normal=(0, 0, 1),
-                 x_axis=None):
+    def __init__(self, center: VectorLike = (0, 0, 0), major_radius: float = 1.0, minor_radius: float = 1.0,
+                 t0: float = -1.0, t1: float = 1.0, normal: VectorLike = (0, 0, 1),
+                 x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.a = as_real(major_radius, "major_radius", finite=False)
         self.b = as_real(minor_radius, "minor_radius", finite=False)
         self.t0 = as_real(t0, "t0", finite=False)
         self.t1 = as_real(t1, "t1", finite=False)
-        super().__init__(_kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
+        super().__init__(kernel.hyperbola_arc(self.center, self.x_axis, self.y_axis, self.a, self.b, self.t0, self.t1))
 
 
 class RationalCubic(BasicCurve):
     """Rational Bézier curve of degree <= 3 from homogeneous control points (rows
     (w x, w y, w z, w)), or from poles and weights."""
 
-    def __init__(self, poles=None, weights=None, homogeneous=None):
+    def __init__(self, poles: Optional[PointsLike] = None, weights: Optional[Sequence[float]] = None,
+                 homogeneous: Optional[PointsLike] = None) -> None:
         if homogeneous is None:
             if poles is None:
                 raise InputError("give poles (and weights) or homogeneous control points")
@@ -219,19 +232,19 @@ class RationalCubic(BasicCurve):
         if h.ndim != 2 or h.shape[1] != 4 or not 2 <= h.shape[0] <= 4:
             raise InputError(f"homogeneous control points must be 2 to 4 rows of 4 numbers, got shape {h.shape}")
         self.homogeneous = h
-        super().__init__(_kernel.RationalBezierCurve(h))
+        super().__init__(kernel.RationalBezierCurve(h))
 
 
 class _Transcendental(BasicCurve):
     exact = False  # Section 5 applies
 
-    def to_part(self, tolerance=1e-9):
+    def to_part(self, tolerance: float = 1e-9) -> Part.BSplineCurve:
         """A cubic C2 B-spline within tolerance x size of the curve (Section 5 with marks
         doubled until the deviation at sampled parameters is below it)."""
         size = self.size()
         for m in (16, 32, 64, 128, 256, 512, 1024):
             marks = np.arange(1, m) / m
-            curve, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(self._curve, marks)], 0.0)
+            curve, _, _ = kernel.merge_pieces([kernel.piece_polygon(self._curve, marks)], 0.0)
             part = to_part(curve)
             u = np.linspace(0, 1, 8 * m + 1)
             error = max((part.value(x) - self.value(x)).Length for x in u)
@@ -243,8 +256,9 @@ class _Transcendental(BasicCurve):
 class ArchimedeanSpiral(_Transcendental):
     """Archimedean spiral r = a + b theta, theta in [theta0, theta1]."""
 
-    def __init__(self, center=(0, 0, 0), a=0.0, b=1.0 / (2 * math.pi), theta0=math.pi / 2, theta1=2 * math.pi,
-                 normal=(0, 0, 1), x_axis=None):
+    def __init__(self, center: VectorLike = (0, 0, 0), a: float = 0.0, b: float = 1.0 / (2 * math.pi),
+                 theta0: float = math.pi / 2, theta1: float = 2 * math.pi, normal: VectorLike = (0, 0, 1),
+                 x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
         self.a = as_real(a, "a", finite=False)
@@ -252,19 +266,21 @@ class ArchimedeanSpiral(_Transcendental):
         self.theta0 = as_real(theta0, "theta0", finite=False)
         self.theta1 = as_real(theta1, "theta1", finite=False)
         super().__init__(
-            _kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
+            kernel.archimedean_spiral(self.center, self.x_axis, self.y_axis, self.a, self.b, self.theta0, self.theta1)
         )
 
 
 class CircleInvolute(_Transcendental):
     """Involute of the circle of radius r: r (cos t + t sin t, sin t - t cos t), t in [t0, t1]."""
 
-    def __init__(self, center=(0, 0, 0), radius=1.0, t0=0.0, t1=math.pi, normal=(0, 0, 1), x_axis=None):
+    def __init__(self, center: VectorLike = (0, 0, 0), radius: float = 1.0, t0: float = 0.0, t1: float = math.pi,
+                 normal: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
         self.center = _vector3(center, "center")
         self.x_axis, self.y_axis = _frame(normal, x_axis)
-        self.radius, self.t0, self.t1 = as_real(radius, "radius", finite=False), as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
+        self.radius = as_real(radius, "radius", finite=False)
+        self.t0, self.t1 = as_real(t0, "t0", finite=False), as_real(t1, "t1", finite=False)
         super().__init__(
-            _kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
+            kernel.circle_involute(self.center, self.x_axis, self.y_axis, self.radius, self.t0, self.t1)
         )
 
 
@@ -273,7 +289,9 @@ class ParametricCurve(_Transcendental):
     taken from `derivative` / `second_derivative` when given, else by central differences.
     It goes through the Section 5 route."""
 
-    def __init__(self, function, s0=0.0, s1=1.0, derivative=None, second_derivative=None):
+    def __init__(self, function: Callable[[float], VectorLike], s0: float = 0.0, s1: float = 1.0,
+                 derivative: Optional[Callable[[float], VectorLike]] = None,
+                 second_derivative: Optional[Callable[[float], VectorLike]] = None) -> None:
         if not callable(function):
             raise InputError("a parametric curve needs a function f(s) -> point")
         self.function, self.s0, self.s1 = function, as_real(s0, "s0"), as_real(s1, "s1")
@@ -292,7 +310,7 @@ class ParametricCurve(_Transcendental):
                 return _vector3(second_derivative(s), "f''(s)")
             return (f(s + step) - 2 * f(s) + f(s - step)) / (step * step)
 
-        super().__init__(_kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
+        super().__init__(kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
 
 
 def _reversed(geometry):
@@ -302,7 +320,7 @@ def _reversed(geometry):
     return b
 
 
-def from_edge(edge):
+def from_edge(edge: CurveLike) -> BasicCurve:
     """The basic curve of a FreeCAD edge (Part or Sketcher): lines, circles, ellipses,
     parabolas, hyperbolas and their arcs, over the edge's parameter range."""
     import Part
@@ -315,7 +333,7 @@ def from_edge(edge):
         else:
             raise InputError(f"not an edge: {type(edge).__name__}")
     curve, t0, t1 = edge.Curve, edge.FirstParameter, edge.LastParameter
-    _require_bounded(t0, t1, type(curve).__name__)
+    require_bounded(t0, t1, type(curve).__name__)
     if isinstance(curve, (Part.Line, Part.LineSegment)):
         return LineSegment(edge.valueAt(t0), edge.valueAt(t1))
     if isinstance(curve, Part.BSplineCurve) or isinstance(curve, Part.BezierCurve):

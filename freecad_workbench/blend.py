@@ -16,21 +16,17 @@ whose end is the pole).
     post = fw.shapes.Cylinder((0, 0, 0), 1, longitudes, [0, 1, 2])
     joined = fw.join_basic_shapes(post, dome)   # Figs. 9-12: basic shape to basic shape
 """
-from collections import namedtuple
+from __future__ import annotations
 
+from typing import Optional
 
-from . import _kernel
+import numpy as np
+
+from . import kernel
+from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, freeform_knots_c1
 from .errors import InputError
-from .kernel import adopt, as_choice, has_bridge, surface_from_part, surface_to_part
-from .shapes import Cone, Cylinder, SphereZone, Torus
-
-BlendResult = namedtuple("BlendResult", "patches shell surface")
-BlendResult.__doc__ = (
-    "patches: [(role, Part.BSplineSurface)] with role 'basic', 'transition' or 'freeform'; "
-    "shell: a Part.Shell with one face per patch (in the same order), neighbours sharing their edges; "
-    "surface: one Part.BSplineSurface that OCCT "
-    "reports C2, or None where the complex is not C2 (the naive baseline)."
-)
+from .kernel import BlendResult, SurfaceLike, as_choice, blend_result, surface_from_part
+from .shapes import BasicShape, Cone, Cylinder, SphereZone, require_shape
 
 _METHODS = ("rho", "sigma", "mixed")
 
@@ -38,9 +34,7 @@ _METHODS = ("rho", "sigma", "mixed")
 def _check(shape, continuity, method):
     as_choice(continuity, "continuity", ("C2", "C1"))
     as_choice(method, "method", _METHODS)
-    if not isinstance(shape, (SphereZone, Cylinder, Cone, Torus)):
-        raise InputError(f"shape must be one of fw.shapes.SphereZone, Cylinder, Cone, Torus, not {type(shape).__name__}")
-    check_cost(shape)
+    check_cost(require_shape(shape))
 
 
 # The most patches of a shape a blend takes: 400 arcs x 2 pieces (800 patches, the ring's
@@ -58,49 +52,19 @@ def check_cost(shape):
                          f"{patches} patches, more than {MAX_PATCHES}; use fewer, longer arcs")
 
 
-def _result(complex_, single=True):
-    """The BlendResult of a kernel BlendComplex. With the bridge, in one hand-over: the kernel
-    builds the shell from its grid (shared edges, no sewing) and the single surface, and
-    FreeCAD adopts both as one compound; the patches are the shell's faces' surfaces (the
-    same Part.BSplineSurface, bit for bit, as a hand-over of each patch)."""
-    if has_bridge():
-        parts = adopt(complex_.result_capsule(single)).childShapes()
-        shell = parts[0]
-        roles = complex_.roles()
-        faces = shell.Faces
-        if len(faces) != len(roles):
-            raise InputError(f"the shell has {len(faces)} faces for {len(roles)} patches")
-        patches = [(role, face.Surface) for role, face in zip(roles, faces)]
-        return BlendResult(patches, shell, parts[1].Surface if len(parts) > 1 else None)
-    return _result_arrays(complex_, single)
-
-
-def _result_arrays(complex_, single=True):
-    """_result without the bridge: every patch and the single surface through arrays, the
-    shell sewn by Part from the patches' faces."""
-    import Part
-
-    patches = [(role, surface_to_part(s)) for role, _, _, s in complex_.patches()]
-    surface = complex_.single_surface() if single else None
-    shell = Part.Shell([Part.Face(s) for _, s in patches])
-    shell.sewShape()
-    return BlendResult(patches, shell, surface_to_part(surface) if surface is not None else None)
-
-
 def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
 
 
-def freeform_knots(shape, method="rho", continuity="C2"):
+def freeform_knots(shape: BasicShape, method: str = "rho", continuity: str = "C2") -> np.ndarray:
     """The u knots (one period) a free-form ring must have to join `shape` at its top: the
     arc knots of the C2 circle, intervals in the ratios beta of the longitudes (continuity
     "C1": those of eq. (12) for a biquadratic ring, blend_c1.py)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
-        from .blend_c1 import freeform_knots_c1
         return freeform_knots_c1(shape)
     _check(shape, "C2", method)
-    return _kernel.ring_knots(shape.around, method)
+    return kernel.ring_knots(shape.around, method)
 
 
 def _interface(shape, at):
@@ -116,29 +80,29 @@ def _complex(shape, freeform, method, naive, at):
     ring = _ring(shape, freeform)
     if isinstance(shape, SphereZone):
         if naive:
-            return _kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
-        return _kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True, at)
+            return kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
+        return kernel.blend_sphere_zone(*frame, shape.radius, shape.longitudes, shape.latitudes, method, ring, True, at)
     if isinstance(shape, (Cylinder, Cone)):
         radius0, slope = (shape.radius, 0.0) if isinstance(shape, Cylinder) else (shape.radius0, shape.slope)
-        return _kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
-    return _kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
-                               ring, True, naive, at)
+        return kernel.blend_cone(*frame, radius0, slope, shape.angles, shape.heights, method, ring, True, naive, at)
+    return kernel.blend_torus(*frame, shape.major_radius, shape.minor_radius, shape.angles_u, shape.angles_v, method,
+                              ring, True, naive, at)
 
 
-def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=None):
+def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
+                      method: str = "rho", at: Optional[str] = None) -> BlendResult:
     """Join a basic shape (at the end of its profile) to a bicubic free-form ring (a
-    periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its first
-    row near the interface, on any knots: they are merged with the shape's), or to a
-    default ring that continues the shape, with a C2 transition strip of degree (6,5). The basic shape stays exact. method: 'rho', 'sigma'
-    or 'mixed' (Section 3). at: 'end' or 'start' of the profile (None: the end, or the
-    start where the end is a pole). A shape edited with shape.set_control (Fig. 1c/d) is
-    joined as edited: C2 along the interface and across the strip, the rows across the
-    profile G2 (its .surface is then None). continuity "C1": Section 5, a biquadratic ring
-    and a (4,2) double strip (blend_c1.py; method unused)."""
+    periodic-in-u, clamped-in-v Part.BSplineSurface going once around the axis, its
+    first row near the interface, on any knots: they are merged with the shape's), or to
+    a default ring that continues the shape, with a C2 transition strip of degree (6,5).
+    The basic shape stays exact. method: 'rho', 'sigma' or 'mixed' (Section 3). at:
+    'end' or 'start' of the profile (None: the end, or the start where the end is a
+    pole). A shape edited with shape.set_control (Fig. 1c/d) is joined as edited: C2
+    along the interface and across the strip, the rows across the profile G2 (its
+    .surface is then None). continuity "C1": Section 5, a biquadratic ring and a (4,2)
+    double strip (blend_c1.py; method unused)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
     if continuity == "C1":
-        from .blend_c1 import blend_basic_shape_c1
-
         _check(shape, continuity, method)
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
@@ -147,11 +111,12 @@ def blend_basic_shape(shape, freeform=None, continuity="C2", method="rho", at=No
     if shape.edited:
         if _interface(shape, at) != "end":
             raise InputError("an edited control structure joins at the end of its profile")
-        return _result(_kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
-    return _result(_complex(shape, freeform, method, False, _interface(shape, at)))
+        return blend_result(kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
+    return blend_result(_complex(shape, freeform, method, False, _interface(shape, at)))
 
 
-def blend_naive(shape, freeform=None, continuity="C2", at=None):
+def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
+                at: Optional[str] = None) -> BlendResult:
     """The naive baseline of Fig. 2a: direct second-order Hermite interpolation of the G2
     shape and the ring, without reparameterization (strip of degree (3,5)). Not C2 where
     the partition's beta do not match: its .surface is None. continuity "C1": the G1
@@ -160,13 +125,12 @@ def blend_naive(shape, freeform=None, continuity="C2", at=None):
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     if continuity == "C1":
-        from .blend_c1 import blend_naive_c1
-
         return blend_naive_c1(shape, freeform, at=_interface(shape, at))
-    return _result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
+    return blend_result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
 
 
-def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
+def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str = "C2",
+                      method: str = "rho") -> BlendResult:
     """Basic shape to basic shape (Figs. 9, 11, 12): the end of shape_a's profile joined to
     the start of shape_b's by one C2 transition row of degree (6,5) (C1: a (4,2) double
     strip); both stay exact. Both need a full turn around their axis (or both a partial
@@ -179,16 +143,17 @@ def join_basic_shapes(shape_a, shape_b, continuity="C2", method="rho"):
     if shape_a.edited or shape_b.edited:
         raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
     if continuity == "C1":
-        return _result(_kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
-    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
+        return blend_result(kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
+    return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 
-def join_naive(shape_a, shape_b):
+def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     """The Fig. 2a baseline between two basic shapes: the G2 patches as they are and a (3,5)
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")
     _check(shape_b, "C2", "rho")
-    return _result(_kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True), single=False)
+    complex_ = kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True)
+    return blend_result(complex_, single=False)
 
 
 __all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots", "join_basic_shapes", "join_naive"]

@@ -1,16 +1,22 @@
 """Design with basic curves (csr paper, Sections 5, 6 and Fig. 9): basic curve pieces
 with marks to one non-uniform cubic C2 NURBS that keeps the pieces exact between the
 marks, rounds off the transitions, and whose control polygon can be edited freely."""
+from __future__ import annotations
+
 import math
 import numbers
 from collections import namedtuple
+from typing import TYPE_CHECKING, Any, Sequence, Union
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .basic import BasicCurve, from_edge
 from .errors import InputError
-from .kernel import as_count, as_flag, as_real, from_part, to_part
+from .kernel import CurveLike, VectorLike, as_count, as_flag, as_real, from_part, to_part
+
+if TYPE_CHECKING:
+    import Part
 
 DesignResult = namedtuple("DesignResult", "curve joins ranges marks marks_added")
 DesignResult.__doc__ = (
@@ -47,7 +53,8 @@ def _piece(item, index):
     return curve, marks
 
 
-def design_spline(pieces, join_tolerance=1e-6, details=False):
+def design_spline(pieces: Sequence[tuple[Union[BasicCurve, Part.Edge], Sequence[Any]]], join_tolerance: float = 1e-6,
+                  details: bool = False) -> Union[Part.BSplineCurve, DesignResult]:
     """One cubic C2 NURBS from basic curve pieces with marks.
 
     pieces: list of (basic_curve, marks); basic_curve is a fw.basic curve or a FreeCAD
@@ -72,36 +79,38 @@ def design_spline(pieces, join_tolerance=1e-6, details=False):
     for index, item in enumerate(pieces):
         curve, marks = _piece(item, index)
         try:
-            polygons.append(_kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
+            polygons.append(kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
         except InputError as exc:
             raise InputError(f"piece {index}: {exc}") from None
-    curve, joins, ranges = _kernel.merge_pieces(polygons, join_tolerance)
+    curve, joins, ranges = kernel.merge_pieces(polygons, join_tolerance)
     part = to_part(curve)
     if not details:
         return part
     return DesignResult(part, joins, ranges, [p.marks for p in polygons], [p.marks_added for p in polygons])
 
 
-def revolve_profile(curve, axis_point=(0, 0, 0), axis_direction=(0, 0, 1)):
+def revolve_profile(curve: CurveLike, axis_point: VectorLike = (0, 0, 0),
+                    axis_direction: VectorLike = (0, 0, 1)) -> Part.BSplineSurface:
     """The exact surface of revolution of a profile (Part curve or edge, e.g. a designed
     spline) about an axis: a Part.BSplineSurface, the profile's NURBS in u times a
     rational circle in v (the paper's profile test)."""
     from .basic import _vector3
     from .kernel import surface_to_part
 
-    surface = _kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
-                              _vector3(axis_direction, "axis_direction"))
+    surface = kernel.revolve(from_part(curve), _vector3(axis_point, "axis_point"),
+                             _vector3(axis_direction, "axis_direction"))
     return surface_to_part(surface)
 
 
-ApproximationError = namedtuple("ApproximationError", "quintic_position quintic_curvature cubic_position cubic_curvature")
+ApproximationError = namedtuple("ApproximationError",
+                                "quintic_position quintic_curvature cubic_position cubic_curvature")
 ApproximationError.__doc__ = (
     "Largest deviation from a basic curve, at equal parameters, of the quintics of eq. (7) and of the cubic "
     "C2 spline (Section 5), in position and in curvature, over [u_2, u_(m-2)] for the spline."
 )
 
 
-def approximation_error(curve, marks, samples=40):
+def approximation_error(curve: BasicCurve, marks: Sequence[Any], samples: int = 40) -> ApproximationError:
     """Measure the Section 5 approximation of a basic curve with the given marks.
 
     The quintic pieces are evaluated for all pieces and samples at once (numpy), so the
@@ -109,9 +118,9 @@ def approximation_error(curve, marks, samples=40):
     if not isinstance(curve, BasicCurve):
         raise InputError(f"curve must be a fw.basic curve, got {type(curve).__name__}")
     samples = as_count(samples, "samples", 1, 10_000)
-    u = _kernel.complete_marks(piece_marks(curve, marks))
+    u = kernel.complete_marks(piece_marks(curve, marks))
     m = len(u) - 1
-    quintic = np.asarray(_kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)
+    quintic = np.asarray(kernel.quintic_pieces(curve._curve, u)).reshape(m, 6, -1)
     h = np.diff(u)
     x = np.linspace(0.0, 1.0, samples + 1)
 
@@ -129,7 +138,7 @@ def approximation_error(curve, marks, samples=40):
     exact, exact_k = _jets(curve, uu)
     qp = float(np.max(np.linalg.norm(p - exact, axis=1)))
     qk = _max_ignoring_undefined(np.abs(_curvature(d1, d2) - exact_k))
-    spline, _, _ = _kernel.merge_pieces([_kernel.piece_polygon(curve._curve, u)], 0.0)
+    spline, _, _ = kernel.merge_pieces([kernel.piece_polygon(curve._curve, u)], 0.0)
     part = to_part(spline)
     lo, hi = (u[2], u[m - 2]) if m >= 4 else (0.0, 1.0)
     t = np.linspace(lo, hi, samples * m + 1)

@@ -23,16 +23,21 @@ measured coverage.
 Curvatures are signed about the plane normal: positive turns counter-clockwise seen from
 the normal's tip (+Z for data in the XY plane).
 """
+from __future__ import annotations
+
 from dataclasses import dataclass
-from typing import Tuple
+from typing import TYPE_CHECKING, Optional, Tuple, Union
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError, NoMonotoneSolution
-from .kernel import _require_bounded, as_choice, as_vector, to_part
+from .kernel import CurveLike, VectorLike, as_choice, as_vector, require_bounded, to_part
 from .monotone import METHODS as PAPER_METHODS
 from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
+
+if TYPE_CHECKING:
+    import Part
 
 CONTINUITIES = ("G1", "G2")
 METHODS = ("fair",) + PAPER_METHODS
@@ -91,7 +96,9 @@ def _optional_curvature(value, name):
     return k
 
 
-def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
+def fair_blend_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike, k0: Optional[float] = None,
+                        k1: Optional[float] = None,
+                        normal: Optional[VectorLike] = None) -> tuple[Part.BSplineCurve, FairBlendReport]:
     """The fair blend from p0 with direction t0 to p1 with direction t1 (G1), or also with
     the signed end curvatures k0, k1 (G2): (Part.BSplineCurve, FairBlendReport).
     normal: the plane normal the curvatures refer to (default: +Z for data in the XY plane,
@@ -100,7 +107,7 @@ def fair_blend_solution(p0, t0, p1, t1, k0=None, k1=None, normal=None):
     False, report.reason why) and the curve is the fairest found, still meeting the ends.
     Raises InputError on bad input: NaN, a zero tangent, coincident points, ends not in one
     plane, only one of k0 and k1, curvatures of ends outside the XY plane without a normal."""
-    result = _kernel.fair_blend(
+    result = kernel.fair_blend(
         as_vector(p0, "p0"),
         as_vector(t0, "t0"),
         as_vector(p1, "p1"),
@@ -163,7 +170,7 @@ def _edge_of(item, name):
 
 def _end_parameter(edge, end, name):
     first, last = edge.FirstParameter, edge.LastParameter
-    _require_bounded(first, last, type(edge.Curve).__name__)
+    require_bounded(first, last, type(edge.Curve).__name__)
     if isinstance(end, str):
         if end not in END_NAMES:
             raise InputError(f"{name} must be 'start', 'end', a vertex or a point, got {end!r}")
@@ -218,7 +225,9 @@ def _signed_curvature(end, normal):
     return float(np.dot(np.cross(end.d1, end.d2), normal) / np.linalg.norm(end.d1) ** 3)
 
 
-def monotone_curvature_spline(p0, t0, p1, t1, k0=None, k1=None, normal=None, method="fair"):
+def monotone_curvature_spline(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike,
+                              k0: Optional[float] = None, k1: Optional[float] = None,
+                              normal: Optional[VectorLike] = None, method: str = "fair") -> Part.BSplineCurve:
     """A planar cubic B-spline from p0 with direction t0 to p1 with direction t1 (and with
     the signed curvatures k0, k1 there, G2, when given) whose curvature is monotone, proved by
     the exact certificate. Curvatures are signed about `normal` (+Z for data in the XY plane).
@@ -239,7 +248,9 @@ def monotone_curvature_spline(p0, t0, p1, t1, k0=None, k1=None, normal=None, met
     return curve
 
 
-def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G2"):
+def fair_blend(edge_a: CurveLike, end_a: Union[str, Part.Vertex, VectorLike], edge_b: CurveLike,
+               end_b: Union[str, Part.Vertex, VectorLike],
+               continuity: str = "G2") -> tuple[Part.BSplineCurve, FairBlendReport]:
     """The fair blend from edge_a's end `end_a` to edge_b's end `end_b`: it leaves edge_a
     continuing it and runs on into edge_b, matching their tangents (G1) or also their
     curvatures (G2), as OCCT evaluates the edges there. Edges: Part or Sketcher lines, arcs,
@@ -259,4 +270,3 @@ def fair_blend(edge_a, end_a, edge_b, end_b, continuity="G2"):
             normal /= np.linalg.norm(normal)
         k0, k1 = _signed_curvature(a, normal), _signed_curvature(b, normal)
     return fair_blend_solution(a.point, a.tangent, b.point, b.tangent, k0, k1, normal)
-

@@ -1,11 +1,110 @@
-"""The only module that talks to the compiled kernel: arrays in, Part geometry out."""
+"""The only module that talks to the compiled kernel (``_kernel``): arrays in, Part geometry out.
+
+Every other module of the macro layer reaches the compiled functions through the names
+below, grouped by the capability that calls them, and hands results over to FreeCAD with
+to_part, surface_to_part, adopt and blend_result. ``_kernel.pyi`` types the compiled module.
+"""
+from __future__ import annotations
+
 import math
 import numbers
+from collections import namedtuple
+from typing import TYPE_CHECKING, Any, Sequence, Union
 
 import numpy as np
 
-from . import _kernel
-from .errors import InputError
+if TYPE_CHECKING:  # names of the annotations only: FreeCAD and Part load when a function needs them
+    import FreeCAD
+    import Part
+
+try:
+    from . import _kernel
+except ImportError as exc:  # pragma: no cover - only when the kernel is not built
+    raise ImportError(
+        "the FairSplines C++ kernel (freecad_workbench/_kernel*.so) is missing or was built for another "
+        "Python: run 'make build' with /usr/bin/python3 (" + str(exc) + ")"
+    ) from exc
+
+# The exceptions of the macro API (errors.py re-exports them): the binding translates the
+# kernel's typed exceptions into these.
+InputError = _kernel.InputError
+InputError.__module__ = "freecad_workbench"
+InputError.__doc__ = "Bad input: the message names the problem (a subclass of ValueError)."
+NoMonotoneSolution = _kernel.NoMonotoneSolution
+NoMonotoneSolution.__module__ = "freecad_workbench"
+NoMonotoneSolution.__doc__ = (
+    "No monotone-curvature curve of the family meets the end conditions; the message says why "
+    "(a subclass of InputError)."
+)
+
+# The argument types of the macro API, for its annotations (the as_* functions below check
+# the values). FreeCAD 0.20 does not export Part's curve base class: a curve is Any there.
+PointsLike = Union[np.ndarray, Sequence[Any]]  #: FreeCAD Vectors, Part Vertexes, tuples, an (N, 2)/(N, 3) array
+VectorLike = Union["FreeCAD.Vector", "Part.Vertex", Sequence[float], np.ndarray]  #: one point or direction
+CurveLike = Union["Part.Edge", "Part.Shape", "Part.BSplineCurve", Any]  #: a Part curve or edge
+SurfaceLike = Union["Part.BSplineSurface", "Part.Face", "Part.Shape"]  #: a B-spline surface or a face on one
+
+# The compiled functions and classes, by the capability (module) that calls them (the
+# hand-over functions below call the kernel's curve and surface constructors themselves).
+# csr fitting (csr.py).
+EpsilonRule = _kernel.EpsilonRule
+csr_spline = _kernel.csr_spline
+csr_edge_capsule = _kernel.csr_edge_capsule
+classic_interpolation = _kernel.classic_interpolation
+quasi_interpolant = _kernel.quasi_interpolant
+control_point_spline = _kernel.control_point_spline
+quadratic_design = _kernel.quadratic_design
+# Basic curves (basic.py).
+BasicCurve = _kernel.BasicCurve
+line_segment = _kernel.line_segment
+CircleArc = _kernel.CircleArc
+ellipse_arc = _kernel.ellipse_arc
+parabola_arc = _kernel.parabola_arc
+hyperbola_arc = _kernel.hyperbola_arc
+RationalBezierCurve = _kernel.RationalBezierCurve
+archimedean_spiral = _kernel.archimedean_spiral
+circle_involute = _kernel.circle_involute
+ParametricCurve = _kernel.ParametricCurve
+# Design with basic curves (design.py; basic.py converts one piece the same way).
+piece_polygon = _kernel.piece_polygon
+merge_pieces = _kernel.merge_pieces
+complete_marks = _kernel.complete_marks
+quintic_pieces = _kernel.quintic_pieces
+revolve = _kernel.revolve
+# Curve analysis (analysis.py).
+curvature_profile = _kernel.curvature_profile
+curvature_sign_changes = _kernel.curvature_sign_changes
+curvature_extrema = _kernel.curvature_extrema
+max_distance = _kernel.max_distance
+# Monotonic-curvature B-splines (monotone.py).
+analyze_end_conditions = _kernel.analyze_end_conditions
+monotone_spline = _kernel.monotone_spline
+design_monotone = _kernel.design_monotone
+certify_monotone = _kernel.certify_monotone
+check_segments = _kernel.check_segments
+curvature_variation = _kernel.curvature_variation
+derivative_polygons = _kernel.derivative_polygons
+# Fair blends (fair_blend.py).
+fair_blend = _kernel.fair_blend
+# Basic shapes (shapes.py).
+sphere_zone = _kernel.sphere_zone
+cylinder = _kernel.cylinder
+cone = _kernel.cone
+torus = _kernel.torus
+ShapeOfRevolution = _kernel.ShapeOfRevolution
+G2Surface = _kernel.G2Surface
+BlendComplex = _kernel.BlendComplex
+# Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
+ring_knots = _kernel.ring_knots
+blend_sphere_zone = _kernel.blend_sphere_zone
+blend_sphere_zone_naive = _kernel.blend_sphere_zone_naive
+blend_cone = _kernel.blend_cone
+blend_torus = _kernel.blend_torus
+blend_edited = _kernel.blend_edited
+join_shapes = _kernel.join_shapes
+ring_knots_c1 = _kernel.ring_knots_c1
+blend_c1 = _kernel.blend_c1
+join_shapes_c1 = _kernel.join_shapes_c1
 
 
 def as_real(value, name, finite=True, minimum=None, positive=False):
@@ -209,6 +308,46 @@ def surface_from_part(surface):
         surface.isUPeriodic(), surface.isVPeriodic(), nu, nv)
 
 
+BlendResult = namedtuple("BlendResult", "patches shell surface")
+BlendResult.__module__ = "freecad_workbench"
+BlendResult.__doc__ = (
+    "patches: [(role, Part.BSplineSurface)] with role 'basic', 'transition' or 'freeform'; "
+    "shell: a Part.Shell with one face per patch (in the same order), neighbours sharing their edges; "
+    "surface: one Part.BSplineSurface that OCCT "
+    "reports C2, or None where the complex is not C2 (the naive baseline)."
+)
+
+
+def blend_result(complex_, single=True):
+    """The BlendResult of a kernel BlendComplex (blend.py and blend_c1.py). With the bridge,
+    in one hand-over: the kernel builds the shell from its grid (shared edges, no sewing) and
+    the single surface, and FreeCAD adopts both as one compound; the patches are the shell's
+    faces' surfaces (the same Part.BSplineSurface, bit for bit, as a hand-over of each patch).
+    single=False: no single surface (.surface None)."""
+    if has_bridge():
+        parts = adopt(complex_.result_capsule(single)).childShapes()
+        shell = parts[0]
+        roles = complex_.roles()
+        faces = shell.Faces
+        if len(faces) != len(roles):
+            raise InputError(f"the shell has {len(faces)} faces for {len(roles)} patches")
+        patches = [(role, face.Surface) for role, face in zip(roles, faces)]
+        return BlendResult(patches, shell, parts[1].Surface if len(parts) > 1 else None)
+    return blend_result_arrays(complex_, single)
+
+
+def blend_result_arrays(complex_, single=True):
+    """blend_result without the bridge: every patch and the single surface through arrays,
+    the shell sewn by Part from the patches' faces."""
+    import Part
+
+    patches = [(role, surface_to_part(s)) for role, _, _, s in complex_.patches()]
+    surface = complex_.single_surface() if single else None
+    shell = Part.Shell([Part.Face(s) for _, s in patches])
+    shell.sewShape()
+    return BlendResult(patches, shell, surface_to_part(surface) if surface is not None else None)
+
+
 def _load_bridge():
     try:
         from . import occ_bridge
@@ -228,12 +367,12 @@ def from_part(curve):
         edges = curve.Edges
         if len(edges) != 1:
             raise InputError(f"expected one edge, got a shape with {len(edges)} edges")
-        _require_bounded(edges[0].FirstParameter, edges[0].LastParameter, type(edges[0].Curve).__name__)
+        require_bounded(edges[0].FirstParameter, edges[0].LastParameter, type(edges[0].Curve).__name__)
         curve = _edge_bspline(edges[0])
     elif not isinstance(curve, Part.BSplineCurve):
         if not hasattr(curve, "toShape"):
             raise InputError(f"not a curve or edge: {type(curve).__name__}")
-        _require_bounded(curve.FirstParameter, curve.LastParameter, type(curve).__name__)
+        require_bounded(curve.FirstParameter, curve.LastParameter, type(curve).__name__)
         curve = _edge_bspline(curve.toShape())
     poles = np.array([(p.x, p.y, p.z) for p in curve.getPoles()], dtype=float)
     weights = np.array(curve.getWeights(), dtype=float) if curve.isRational() else np.zeros(0)
@@ -251,7 +390,8 @@ def from_part(curve):
 _INFINITE = 2e100
 
 
-def _require_bounded(first, last, kind):
+def require_bounded(first, last, kind):
+    """InputError for an unbounded parameter range (an untrimmed line or conic)."""
     if not (abs(first) < _INFINITE and abs(last) < _INFINITE):
         raise InputError(f"the {kind} is unbounded (parameters {first:g} to {last:g}): trim it first")
 

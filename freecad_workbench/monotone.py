@@ -11,15 +11,21 @@ certificate that any planar B-spline or Bezier curve has monotone curvature.
 Curvature is signed about the curve's plane normal (counter-clockwise turning positive), so
 `increasing` and `decreasing` refer to the signed curvature along the curve's parameter.
 """
+from __future__ import annotations
+
 import re
 from dataclasses import dataclass
-from typing import Optional, Tuple
+from typing import TYPE_CHECKING, Optional, Sequence, Tuple
 
 import numpy as np
 
-from . import _kernel
+from . import kernel
 from .errors import InputError
-from .kernel import as_choice, as_points, as_real, as_reals, as_vector, from_part, to_part
+from .kernel import (CurveLike, PointsLike, VectorLike, as_choice, as_points, as_real, as_reals, as_vector, from_part,
+                     to_part)
+
+if TYPE_CHECKING:
+    import Part
 
 # The paper's Algorithm 2: "paper" solves for the analytic centre of the family's admissible
 # set (called "fairest" before fair blends existed; still accepted), "grid" is the paper's
@@ -41,12 +47,13 @@ class EndConditions:
     reason: str  #: why not admissible ('' when admissible)
 
 
-def monotone_end_conditions(p0, t0, p1, t1):
+def monotone_end_conditions(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike) -> EndConditions:
     """Classify G1 end conditions: admissible when the end tangents meet at M ahead of p0 and
     behind p1, turn by less than 90 degrees, and min(a, b) <= max(a, b) cos(turn) with
     a = |M - p0|, b = |p1 - M| (equality: a parabola from its vertex). Raises InputError on bad
     input (a zero tangent, coincident points, NaN)."""
-    info = _kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"))
+    info = kernel.analyze_end_conditions(as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"),
+                                         as_vector(t1, "t1"))
     return EndConditions(**info)
 
 
@@ -61,7 +68,8 @@ class MonotoneSolution:
     iterations: int  #: Newton iterations, or grid points tried
 
 
-def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
+def monotone_curvature_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike, method: str = "paper",
+                                grid_step: float = 0.02) -> MonotoneSolution:
     """The paper's Algorithm 2 with the solver's diagnostics: a MonotoneSolution whose curve is
     a planar cubic B-spline (5 poles, knots 0, 1, 2 with multiplicities 4, 1, 4) from p0 with
     direction t0 to p1 with direction t1, verified by Theorem 1 and the exact certificate.
@@ -73,7 +81,7 @@ def monotone_curvature_solution(p0, t0, p1, t1, method="paper", grid_step=0.02):
     the end conditions (or, for "grid", when the grid finds none); InputError on bad input.
     fw.monotone_curvature_spline solves every G1 problem (see fair_blend)."""
     as_choice(method, "method", METHODS + ("fairest",))
-    curve, reversed_, boundary, margin, iterations = _kernel.monotone_spline(
+    curve, reversed_, boundary, margin, iterations = kernel.monotone_spline(
         as_vector(p0, "p0"), as_vector(t0, "t0"), as_vector(p1, "p1"), as_vector(t1, "t1"),
         _KERNEL_METHODS[method], as_real(grid_step, "grid_step", positive=True)
     )
@@ -90,7 +98,9 @@ def _design_inputs(first_vector, differences, knots, start):
     return first[:2].copy(), np.ascontiguousarray(diffs[:, :2]), t, origin
 
 
-def monotone_curvature_design(first_vector, differences, knots=None, start=None):
+def monotone_curvature_design(first_vector: VectorLike, differences: PointsLike,
+                              knots: Optional[Sequence[float]] = None,
+                              start: Optional[VectorLike] = None) -> Part.BSplineCurve:
     """Algorithm 1: the cubic B-spline with control points C_0 = start (default origin),
     C_1 = C_0 + V_0, C_{i+1} = C_i + V_i, V_0 = first_vector, V_{i+1} = V_i + dV_i.
 
@@ -100,14 +110,15 @@ def monotone_curvature_design(first_vector, differences, knots=None, start=None)
     differences: N >= 2 vectors in the XY plane; knots: the full knot vector t_0..t_(N+5)
     (default: clamped, uniform inside). Returns a Part.BSplineCurve in the XY plane.
     See clamp_to_fair_locations for the differences actually used."""
-    curve, _, _, _ = _kernel.design_monotone(*_design_inputs(first_vector, differences, knots, start))
+    curve, _, _, _ = kernel.design_monotone(*_design_inputs(first_vector, differences, knots, start))
     return to_part(curve)
 
 
-def clamp_to_fair_locations(first_vector, differences, knots=None):
+def clamp_to_fair_locations(first_vector: VectorLike, differences: PointsLike,
+                            knots: Optional[Sequence[float]] = None) -> tuple[np.ndarray, np.ndarray]:
     """The differences Algorithm 1 uses, as an (N, 2) array, and how far each was moved (N,)
     to reach its fair location (0 where it was kept as given)."""
-    _, used, moved, _ = _kernel.design_monotone(*_design_inputs(first_vector, differences, knots, None))
+    _, used, moved, _ = kernel.design_monotone(*_design_inputs(first_vector, differences, knots, None))
     return np.asarray(used), np.asarray(moved)
 
 
@@ -176,7 +187,7 @@ class MonotonicityReport:
         return "\n".join(lines)
 
 
-def check_monotone_curvature(curve, rel_tol=1e-12):
+def check_monotone_curvature(curve: CurveLike, rel_tol: float = 1e-12) -> MonotonicityReport:
     """Exact certificate that a planar curve (Part.BSplineCurve, Part.BezierCurve, any Part
     curve or edge, converted exactly to a B-spline; polynomial or rational) has monotone
     curvature. Per knot span the sign of kappa' is the sign of one polynomial, decided from
@@ -185,14 +196,15 @@ def check_monotone_curvature(curve, rel_tol=1e-12):
     span; for non-periodic polynomial cubics also the paper's Lemmas 1-3 per segment.
     Raises InputError for a non-planar curve."""
     kernel_curve = from_part(curve)
-    return report_from_certificate(_kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0)), kernel_curve)
+    certificate = kernel.certify_monotone(kernel_curve, as_real(rel_tol, "rel_tol", minimum=0))
+    return report_from_certificate(certificate, kernel_curve)
 
 
 def report_from_certificate(cert, kernel_curve):
     """The MonotonicityReport of the kernel's certificate (a dict) of kernel_curve."""
     paper = [None] * len(cert["spans"])
     if kernel_curve.degree == 3 and not kernel_curve.rational and not kernel_curve.periodic:
-        paper = [s["reason"] for s in _kernel.check_segments(kernel_curve)]
+        paper = [s["reason"] for s in kernel.check_segments(kernel_curve)]
     spans = []
     for i, (s, p) in enumerate(zip(cert["spans"], paper)):
         extremum = (s["at"], s["kappa_at"], bool(s["maximum"])) if s["trend"] == "extremum" else None
@@ -211,14 +223,14 @@ def report_from_certificate(cert, kernel_curve):
     )
 
 
-def curvature_variation(curve):
+def curvature_variation(curve: CurveLike) -> float:
     """Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds of a planar curve: 0 for
     lines and circles, small for fair spirals. Used to compare solvers."""
-    return float(_kernel.curvature_variation(from_part(curve)))
+    return float(kernel.curvature_variation(from_part(curve)))
 
 
-def derivative_polygons(curve):
+def derivative_polygons(curve: CurveLike) -> tuple[np.ndarray, np.ndarray]:
     """Eqs. (3) and (5): the control points C^1_i of P' and C^2_i of P'' of a non-periodic,
     non-rational cubic B-spline, as two arrays."""
-    first, second = _kernel.derivative_polygons(from_part(curve))
+    first, second = kernel.derivative_polygons(from_part(curve))
     return np.asarray(first), np.asarray(second)

@@ -406,15 +406,20 @@ def tail(e, single=False):
     return e.count(0, 0).byte(0 if single else 255).byte(255)
 
 
-sphere = lambda e: lat(e, [1.0, 1.0], lo=0.25, hi=0.75)
+def sphere(e):
+    return lat(e, [1.0, 1.0], lo=0.25, hi=0.75)
+
+
 seed("fuzz_blend_surface", "sphere_zone_rho", tail(options(revolution(Enc().choice(0), 0, 8, 1.0, sphere)), True))
 seed("fuzz_blend_surface", "sphere_zone_naive",
      tail(options(revolution(Enc().choice(0), 0, 6, 1.0, sphere), naive=True)))
 seed("fuzz_blend_surface", "cone_sigma", tail(options(revolution(Enc().choice(1), 1, 6, 2.0,
-                                                                   lambda e: profile(e, [1.0, 1.0]), size1=0.25), 1)))
+                                                                 lambda e: profile(e, [1.0, 1.0]), size1=0.25), 1)))
 seed("fuzz_blend_surface", "torus_mixed_start",
      tail(options(revolution(Enc().choice(0), 2, 8, 3.0, lambda e: profile(e, [1.0, 1.0]), size1=0.25), 2,
                   start=True)))
+
+
 # Shape to shape: the first shape and the options, then the second shape, which takes the
 # first's angles around (0).
 def second(e, kind, size0, profile_fn, size1=None, raw_size1=None):
@@ -428,7 +433,10 @@ def second(e, kind, size0, profile_fn, size1=None, raw_size1=None):
     return profile_fn(e)
 
 
-cylinder = lambda e: profile(e, [1.0, 1.0])
+def cylinder(e):
+    return profile(e, [1.0, 1.0])
+
+
 seed("fuzz_blend_surface", "join_cylinder_sphere",
      tail(second(options(revolution(Enc().choice(2), 1, 6, 1.0, cylinder)), 0, 1.0, lambda e: lat(e, [1.0], lo=0.5))))
 seed("fuzz_blend_surface", "blend_c1_sphere",

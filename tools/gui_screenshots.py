@@ -82,7 +82,8 @@ def grab(out, name, direction="viewTop"):
     main.grab().save(path)
     area = main.findChild(QtWidgets.QMdiArea)
     sub = area.activeSubWindow() if area is not None else None
-    is_3d = sub is not None and sub.widget() is not None and sub.widget().metaObject().className() == "Gui::View3DInventor"
+    is_3d = (sub is not None and sub.widget() is not None
+             and sub.widget().metaObject().className() == "Gui::View3DInventor")
     if view is not None and is_3d:
         widget = sub.widget()
         corner = widget.mapTo(main, QtCore.QPoint(0, 0))

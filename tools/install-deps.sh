@@ -6,7 +6,7 @@ packages=(
   freecad
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
   pybind11-dev libeigen3-dev libgtest-dev swig
-  python3-dev python3-numpy python3-pytest python3-hypothesis python3-matplotlib python3-pil
+  python3-dev python3-numpy python3-pytest python3-hypothesis python3-matplotlib python3-pil python3-flake8
   xvfb xauth
 )
 # `install-deps.sh sanitizers` (make fuzz, make test-sanitize): also clang with its

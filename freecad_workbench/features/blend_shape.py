@@ -93,16 +93,16 @@ _PROPERTIES = (
     ("App::PropertyFloat", "Slope", "Cone: radius = Radius0 + Slope * height", None, 0),
     ("App::PropertyLength", "MajorRadius", "Torus: distance of the tube's centre from the axis", None, 0),
     ("App::PropertyLength", "MinorRadius", "Torus: radius of the tube", None, 0),
-    ("App::PropertyFloatList", "Longitudes", "Sphere zone: increasing angles around the axis, a full turn or part of one "
-     "(degrees)", None, 0),
+    ("App::PropertyFloatList", "Longitudes", "Sphere zone: increasing angles around the axis, a full turn or part "
+     "of one (degrees)", None, 0),
     ("App::PropertyFloatList", "Latitudes", "Sphere zone: increasing latitudes in [-90, 90] (degrees); the ring "
      "joins at the last", None, 0),
-    ("App::PropertyFloatList", "Angles", "Cylinder, cone: increasing angles around the axis, a full turn or part of one "
-     "(degrees)", None, 0),
+    ("App::PropertyFloatList", "Angles", "Cylinder, cone: increasing angles around the axis, a full turn or part "
+     "of one (degrees)", None, 0),
     ("App::PropertyFloatList", "Heights", "Cylinder, cone: increasing heights along the axis; the ring joins "
      "at the last", None, 0),
-    ("App::PropertyFloatList", "AnglesU", "Torus: increasing angles around the axis, a full turn or part of one (degrees)",
-     None, 0),
+    ("App::PropertyFloatList", "AnglesU", "Torus: increasing angles around the axis, a full turn or part of one "
+     "(degrees)", None, 0),
     ("App::PropertyFloatList", "AnglesV", "Torus: increasing angles around the tube, 0 = outer equator, less "
      "than a full turn (degrees); the ring joins at the last", None, 0),
     ("App::PropertyBool", "Uniform", "Generate the lists: AroundCount equal arcs around, ProfileCount equal "

@@ -27,7 +27,7 @@ import FreeCAD
 import Part
 
 from .. import preferences
-from ..curves import PARAMETRIZATIONS, csr_spline
+from ..csr import PARAMETRIZATIONS, csr_spline
 from ..errors import InputError
 from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
@@ -49,6 +49,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class CsrFit(FeatureProxy):
     """Proxy of a Part::FeaturePython holding a csr-spline fitted to its Sources."""
 

@@ -64,6 +64,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class DesignSpline(FeatureProxy):
     """Proxy of a Part::FeaturePython holding fw.design_spline of its pieces and marks."""
 

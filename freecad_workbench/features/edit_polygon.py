@@ -40,6 +40,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class EditPolygon(FeatureProxy):
     """Proxy of a Part::FeaturePython: the source spline with some poles moved."""
 
@@ -119,7 +121,8 @@ def edited_curve(obj):
         )
     for index, offset in enumerate(offsets, start=1):
         if not all(math.isfinite(c) for c in offset):
-            raise InputError(f"PoleOffsets: the offset of pole {index} is not finite ({offset.x}, {offset.y}, {offset.z})")
+            raise InputError(f"PoleOffsets: the offset of pole {index} is not finite "
+                             f"({offset.x}, {offset.y}, {offset.z})")
         if offset.Length > 0.0:
             curve.setPole(index, curve.getPole(index) + offset)
     return curve

@@ -44,18 +44,24 @@ WARNING = "warning: "
 _PROPERTIES = (
     ("App::PropertyLinkSub", "Start", "Edge or vertex where the blend starts", None, 0),
     ("App::PropertyEnumeration", "StartEnd", "Which end of the start edge: auto (nearest), first or last", "auto", 0),
-    ("App::PropertyVector", "StartDirection", "Tangent at the start when Start is a vertex", FreeCAD.Vector(1, 0, 0), 0),
+    ("App::PropertyVector", "StartDirection", "Tangent at the start when Start is a vertex", FreeCAD.Vector(1, 0, 0),
+     0),
     ("App::PropertyLinkSub", "End", "Edge or vertex where the blend ends", None, 0),
     ("App::PropertyEnumeration", "EndEnd", "Which end of the end edge: auto (nearest), first or last", "auto", 0),
     ("App::PropertyVector", "EndDirection", "Tangent at the end when End is a vertex", FreeCAD.Vector(1, 0, 0), 0),
-    ("App::PropertyFloat", "StartCurvature", "Curvature at the start when Start is a vertex and Continuity is G2 (1/mm, signed: positive turns counter-clockwise about the plane normal)", 0.0, 0),
-    ("App::PropertyFloat", "EndCurvature", "Curvature at the end when End is a vertex and Continuity is G2 (1/mm, signed)", 0.0, 0),
+    ("App::PropertyFloat", "StartCurvature", "Curvature at the start when Start is a vertex and Continuity is G2 "
+     "(1/mm, signed: positive turns counter-clockwise about the plane normal)", 0.0, 0),
+    ("App::PropertyFloat", "EndCurvature", "Curvature at the end when End is a vertex and Continuity is G2 "
+     "(1/mm, signed)", 0.0, 0),
     ("App::PropertyEnumeration", "Continuity", "G2: tangents and curvatures of the edges; G1: tangents only", "G2", 0),
-    ("App::PropertyEnumeration", "Method", "fair: any ends; paper: the monotone-curvature paper's single cubic (Algorithm 2, G1); grid: its grid search", "fair", 0),
+    ("App::PropertyEnumeration", "Method", "fair: any ends; paper: the monotone-curvature paper's single cubic "
+     "(Algorithm 2, G1); grid: its grid search", "fair", 0),
     ("App::PropertyString", "Curvature", "How the curvature runs (the certificate)", "", 1),
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class FairBlend(FeatureProxy):
     """Proxy of a Part::FeaturePython holding a fair blend."""
 

@@ -27,6 +27,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class MonotoneDesign(FeatureProxy):
     """Proxy of a Part::FeaturePython holding an Algorithm 1 design."""
 
@@ -61,4 +63,3 @@ def make_monotone_design(doc, first_vector, differences, knots=None, name="Monot
         attach_view_provider(obj, "ViewProviderMonotoneDesign")
         doc.recompute()
     return obj
-

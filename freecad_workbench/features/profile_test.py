@@ -30,6 +30,8 @@ _PROPERTIES = (
     ("App::PropertyString", "Status", "'ok', or why the last recompute failed", "ok", 1),
     ("App::PropertyInteger", "Version", "Version of this object's properties", 0, 2),
 )
+
+
 class ProfileTest(FeatureProxy):
     """Proxy of a Part::FeaturePython: the exact surface of revolution of its profile."""
 

@@ -192,8 +192,6 @@ def _mdi_area():
     return window.findChild(QtWidgets.QMdiArea) if window is not None else None
 
 
-
-
 def main_window():
     """FreeCAD's main window (see qt.main_window); Qt is imported only here."""
     from .qt import main_window as find

@@ -134,7 +134,7 @@ class PreferencePage:
             "FairSplines",
             "Length of the teeth. At 1 the longest tooth is at most a quarter of the curve's size and no tooth "
             "reaches its centre of curvature; 2 doubles them. Negative: the comb on the other side of the curve."),
-            decimals=3, step=0.1)
+                    decimals=3, step=0.1)
         self._int(rows, "CombSamples", translate("FairSplines", "Teeth per edge"), translate(
             "FairSplines", "How many teeth a comb has on each edge, at least. More show finer detail, "
             "fewer redraw faster."), step=32)
@@ -151,7 +151,8 @@ class PreferencePage:
         rows = self._group(layout, translate("FairSplines", "Fitting"))
         self._tolerance(rows, "CsrEpsilon", translate("FairSplines", "Spline through points: tolerance"), translate(
             "FairSplines", "Curvature below this, relative to one over the size of the data, counts as straight "
-            "(eq. (6) of the csr paper). Used by new splines through points (csr fits); an existing one keeps its CurvatureTolerance."))
+            "(eq. (6) of the csr paper). Used by new splines through points (csr fits); an existing one keeps its "
+            "CurvatureTolerance."))
         self._tolerance(rows, "JoinTolerance", translate("FairSplines", "Design spline join tolerance"), translate(
             "FairSplines", "End points of consecutive pieces closer than this are averaged into one point; "
             "farther apart they are joined by a line. Used by new design splines."), " mm")

@@ -56,8 +56,9 @@ GOOD_ENDS = [S.good_vector] * 4
 FIT = dict(closed=S.flag_arg, parametrization=PARAM)
 
 # ---- curves -------------------------------------------------------------------------------
-register("csr_spline", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(FIT, epsilon=S.number_arg, epsilon_rule=S.choice_arg("case", "additive"),
-                                             parameters=S.parameters_arg), examples=60)
+register("csr_spline", [S.points_arg], valid=GOOD_POINTS,
+         kwargs=dict(FIT, epsilon=S.number_arg, epsilon_rule=S.choice_arg("case", "additive"),
+                     parameters=S.parameters_arg), examples=60)
 register("interpolate_classic", [S.points_arg], valid=GOOD_POINTS, kwargs=FIT, examples=40)
 register("quasi_interpolant", [S.points_arg], valid=GOOD_POINTS, kwargs=FIT, examples=40)
 register("control_point_spline", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(closed=S.flag_arg), examples=40)
@@ -82,10 +83,12 @@ register("approximation_error", [st.one_of(S.basic_curve, S.junk), marks], dict(
 CONT = S.choice_arg("C2", "C1")
 METHOD = S.choice_arg("rho", "sigma", "mixed")
 AT = st.one_of(st.none(), S.choice_arg("end", "start"))
-register("blend_basic_shape", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.freeform_arg, continuity=CONT, method=METHOD, at=AT),
-         examples=12)
-register("blend_naive", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.freeform_arg, continuity=CONT, at=AT), examples=10)
-register("join_basic_shapes", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape], kwargs=dict(continuity=CONT, method=METHOD), examples=10)
+register("blend_basic_shape", [S.shape_arg], valid=[S.shape],
+         kwargs=dict(freeform=S.freeform_arg, continuity=CONT, method=METHOD, at=AT), examples=12)
+register("blend_naive", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.freeform_arg, continuity=CONT, at=AT),
+         examples=10)
+register("join_basic_shapes", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape],
+         kwargs=dict(continuity=CONT, method=METHOD), examples=10)
 register("join_naive", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape], examples=8)
 register("freeform_knots", [S.shape_arg], valid=[S.shape], kwargs=dict(method=METHOD, continuity=CONT), examples=20)
 
@@ -95,12 +98,14 @@ curvature = st.one_of(st.none(), S.number_arg)
 register("monotone_end_conditions", ENDS, valid=GOOD_ENDS, examples=40)
 register("monotone_curvature_solution", ENDS, valid=GOOD_ENDS,
          kwargs=dict(method=S.choice_arg("paper", "grid", "fairest"), grid_step=S.number_arg), examples=30)
-register("monotone_curvature_spline", ENDS, valid=GOOD_ENDS, kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg),
-                                                 method=S.choice_arg("fair", "paper", "grid")), examples=25)
-register("fair_blend_solution", ENDS, valid=GOOD_ENDS, kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg)),
-         examples=25)
+register("monotone_curvature_spline", ENDS, valid=GOOD_ENDS,
+         kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg),
+                     method=S.choice_arg("fair", "paper", "grid")), examples=25)
+register("fair_blend_solution", ENDS, valid=GOOD_ENDS,
+         kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg)), examples=25)
 END = st.one_of(S.choice_arg("start", "end"), S.vector_arg)
-register("fair_blend", [S.curve_arg, END, S.curve_arg, END], valid=[S.curve_arg, S.choice_arg("start", "end")] * 2, kwargs=dict(continuity=S.choice_arg("G2", "G1")), examples=25)
+register("fair_blend", [S.curve_arg, END, S.curve_arg, END], valid=[S.curve_arg, S.choice_arg("start", "end")] * 2,
+         kwargs=dict(continuity=S.choice_arg("G2", "G1")), examples=25)
 # Differences of any size: Algorithm 1 is scale-invariant (its vectors are divided by a power of
 # two first); 1e307 apart gave NaN before (cpp/tests/test_scale.cpp).
 moderate = st.one_of(st.sampled_from([0.0, 1.0, -1.0, 0.5, 1e-9, 1e-300, 1e6, 1e50, 1e307, -1e307, 1e308]),
@@ -123,7 +128,8 @@ register("basic.ParabolaArc", [], dict(FRAME, vertex=V, focal=N, t0=N, t1=N), ex
 register("basic.HyperbolaArc", [], dict(FRAME, center=V, major_radius=N, minor_radius=N, t0=N, t1=N), examples=30)
 register("basic.RationalCubic", [], dict(poles=st.one_of(S.points_arg, st.lists(V, max_size=5)),
                                          weights=st.one_of(st.lists(N, max_size=5), S.junk),
-                                         homogeneous=st.one_of(S.points_arg, st.lists(st.tuples(N, N, N, N), max_size=5))),
+                                         homogeneous=st.one_of(S.points_arg,
+                                                               st.lists(st.tuples(N, N, N, N), max_size=5))),
          examples=30)
 register("basic.ArchimedeanSpiral", [], dict(FRAME, center=V, a=N, b=N, theta0=N, theta1=N), examples=20)
 register("basic.CircleInvolute", [], dict(FRAME, center=V, radius=N, t0=N, t1=N), examples=20)

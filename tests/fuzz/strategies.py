@@ -30,7 +30,8 @@ def maybe_junk(strategy, junk_weight=1):
 number_arg = st.one_of(finite, finite, maybe_junk(numbers))
 small_int = st.one_of(st.integers(-3, 40), st.sampled_from([0, 1, 2, 10 ** 6, 2 ** 31, 2 ** 63, -2 ** 31]))
 count_arg = st.one_of(small_int, numbers, junk)
-flag_arg = st.one_of(st.booleans(), st.booleans(), st.booleans(), st.sampled_from([0, 1, 2, None, "yes", "", float("nan")]))
+flag_arg = st.one_of(st.booleans(), st.booleans(), st.booleans(),
+                     st.sampled_from([0, 1, 2, None, "yes", "", float("nan")]))
 
 
 def choice_arg(*valid):
@@ -54,7 +55,8 @@ point3 = _point(3)
 @st.composite
 def point_lists(draw, huge=True):
     kinds = ["2d", "3d"] * 6 + ["dup", "collinear", "mixed", "ragged", "empty",
-                                 "one", "array", "badarray", "strings", "nested", "vectors", "tiny"] + (["huge"] if huge else [])
+                                 "one", "array", "badarray", "strings", "nested", "vectors", "tiny"]
+    kinds += ["huge"] if huge else []
     kind = draw(st.sampled_from(kinds))
     if kind in ("2d", "3d"):
         return draw(st.lists(point2 if kind == "2d" else point3, min_size=draw(st.sampled_from([0, 3, 3, 3])),

@@ -29,7 +29,8 @@ def test_every_public_callable_has_a_strategy():
 def test_contract(name):
     entry = REGISTRY[name]
 
-    @settings(derandomize=True, database=None, deadline=None, max_examples=max(1, int(entry.examples * EXAMPLES_FACTOR * SCALE)),
+    @settings(derandomize=True, database=None, deadline=None,
+              max_examples=max(1, int(entry.examples * EXAMPLES_FACTOR * SCALE)),
               suppress_health_check=list(HealthCheck), print_blob=False)
     @given(entry.strategy)
     def run(call):

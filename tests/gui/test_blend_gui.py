@@ -80,8 +80,6 @@ def new_blend(doc):
     return created[0]
 
 
-
-
 def test_command_creates_a_blend_in_one_undo_step_and_opens_its_panel(scene):
     from freecad_workbench.gui.panels.blend_shape import BlendShapePanel
     from freecad_workbench.gui.view_providers import ViewProviderBlendShape

@@ -148,15 +148,6 @@ def design_from_command(doc, sketch, chain):
     return design
 
 
-# --- workbench --------------------------------------------------------------------------
-
-
-
-
-
-
-
-
 # --- basic curves -----------------------------------------------------------------------
 
 @pytest.mark.parametrize("kind", KINDS)
@@ -193,7 +184,7 @@ def test_basic_curve_panel_edits_dimensions_and_plane_live(scene):
     edge = arc.Shape.Edges[0]
     assert edge.Curve.Radius == pytest.approx(12.5)
     assert (edge.valueAt(edge.LastParameter) - V(12.5 * math.cos(math.radians(135)),
-                                                  12.5 * math.sin(math.radians(135)), 0)).Length < 1e-12
+                                                 12.5 * math.sin(math.radians(135)), 0)).Length < 1e-12
     panel.plane.setCurrentIndex(1)  # XZ
     for spin, value in zip(panel.position, (1, 2, 3)):
         spin.setValue(value)
@@ -284,7 +275,8 @@ def test_mark_points_panel_sliders_drive_the_design(scene, artifacts):
     panel.rows[1][1].slider.setValue(3000)
     assert get_marks(design)[1][1] == pytest.approx(0.3)
     np.testing.assert_array_equal(poles(design), poles(expected_curve(design)))
-    assert not np.allclose(poles(design)[: len(initial_poles)], initial_poles) or poles(design).shape != initial_poles.shape
+    assert (not np.allclose(poles(design)[: len(initial_poles)], initial_poles)
+            or poles(design).shape != initial_poles.shape)
     # a slider pushed past its neighbour stops one step short of it
     neighbour = get_marks(design)[1][2]
     panel.rows[1][1].slider.setValue(SCALE - 1)

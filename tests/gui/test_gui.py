@@ -98,8 +98,6 @@ def test_workbench_has_icon_toolbar_and_menu():
     assert "FairSplines" in FreeCADGui.activeWorkbench().listMenus()
 
 
-
-
 def test_csr_fit_command_fits_selected_vertices_in_pick_order(scene):
     doc, objs = scene
     picked = [objs[0], objs[2], objs[1]] + objs[3:]  # pick order, not creation order
@@ -142,7 +140,8 @@ def _edge_source(doc, objs):
     return [(line, "Edge1")], line.Shape.Edges[0].discretize(Number=50)
 
 
-@pytest.mark.parametrize("make_source", [_points_source, _sketch_source, _edge_source], ids=["points", "sketch", "edge"])
+@pytest.mark.parametrize("make_source", [_points_source, _sketch_source, _edge_source],
+                         ids=["points", "sketch", "edge"])
 def test_csr_fit_command_takes_points_objects_sketches_and_edges(scene, make_source):
     doc, objs = scene
     sources, points = make_source(doc, objs)
@@ -262,7 +261,8 @@ def test_comb_follows_its_curve_and_the_scale_panel(scene):
     doc.recompute()
     base1, tip1 = _teeth(node)
     assert base1.shape != base0.shape or not np.allclose(base1, base0, atol=1e-3)
-    new = comb.comb_lines(fit.Shape.Edges[0], comb.get_style()[0] * comb.auto_scale(fit.Shape.Edges), comb.get_style()[1])
+    scale, samples = comb.get_style()[:2]
+    new = comb.comb_lines(fit.Shape.Edges[0], scale * comb.auto_scale(fit.Shape.Edges), samples)
     np.testing.assert_allclose(base1, new.base, atol=1e-4)
     np.testing.assert_allclose(tip1, new.tip, atol=1e-4)
 
@@ -293,8 +293,6 @@ def test_comb_command_with_nothing_selected_hides_all_combs(scene):
 
 
 def test_plot_command_opens_a_figure_with_a_line_per_edge(scene, artifacts):
-    import matplotlib.pyplot as plt
-
     doc, objs = scene
     fit = fit_of(doc, objs)
     classic = doc.addObject("Part::Feature", "Classic")
@@ -312,7 +310,7 @@ def test_plot_command_opens_a_figure_with_a_line_per_edge(scene, artifacts):
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert legend == [f"{fit.Label}.Edge1", "Classic C2", "curvature maximum", "curvature minimum"]
     profile = fw.curvature_profile(classic.Shape.Edges[0], 1024)
-    line = [l for l in ax.get_lines() if l.get_label() == "Classic C2"][0]
+    line = [artist for artist in ax.get_lines() if artist.get_label() == "Classic C2"][0]
     np.testing.assert_array_equal(line.get_ydata(), profile.kappa)
     fig.savefig(os.path.join(artifacts, "gui_curvature_plot.png"))
     select(doc, (objs[0], "Vertex1"))

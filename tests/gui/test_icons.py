@@ -166,7 +166,8 @@ def referenced_icons():
             if isinstance(node, ast.ClassDef):
                 attrs = {}
                 for stmt in node.body:
-                    if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 and isinstance(stmt.targets[0], ast.Name):
+                    if (isinstance(stmt, ast.Assign) and len(stmt.targets) == 1
+                            and isinstance(stmt.targets[0], ast.Name)):
                         attrs[stmt.targets[0].id] = (_string(stmt.value), stmt.lineno)
                 for attr in ("ICON", "ERROR_ICON"):
                     name, line = attrs.get(attr, (None, 0))
@@ -265,7 +266,8 @@ def test_error_and_warning_icons_are_their_base_with_a_badge(name):
 def test_every_icon_the_code_names_exists():
     found = referenced_icons()
     assert len(found) >= 25, f"the source scan found only {sorted(found)}"
-    missing = {name: where for name, where in found.items() if not os.path.isfile(os.path.join(ICON_DIR, name + ".svg"))}
+    missing = {name: where for name, where in found.items()
+               if not os.path.isfile(os.path.join(ICON_DIR, name + ".svg"))}
     assert not missing, "no icons/<name>.svg for: " + "; ".join(f"{n} ({w})" for n, w in sorted(missing.items()))
 
 
@@ -279,7 +281,8 @@ def test_every_registered_command_pixmap_exists(gui):
         pixmap = gui.Command.get(name).getInfo().get("pixmap", "")
         if not pixmap:
             continue
-        path = pixmap if os.path.isabs(pixmap) else os.path.join(ICON_DIR, pixmap + ("" if pixmap.endswith(".svg") else ".svg"))
+        name = pixmap if pixmap.endswith(".svg") else pixmap + ".svg"
+        path = pixmap if os.path.isabs(pixmap) else os.path.join(ICON_DIR, name)
         if not os.path.isfile(path):
             bad.append(f"{name}: {pixmap}")
     assert not bad, "; ".join(bad)

@@ -80,8 +80,6 @@ def pick(doc, obj, sub, point):
     FreeCADGui.Selection.addSelection(doc.Name, obj.Name, sub, *point)
 
 
-
-
 def test_blend_command_bridges_the_picked_ends_of_two_edges(scene, monkeypatch):
     import FreeCADGui
 
@@ -185,7 +183,6 @@ class ConsoleSpy:
 
 def test_check_command_reports_and_plots_with_the_extremum_marked(scene, artifacts, monkeypatch):
     import FreeCADGui
-    import matplotlib.pyplot as plt
     import Part
 
     doc, (lead, out) = scene
@@ -214,10 +211,12 @@ def test_check_command_reports_and_plots_with_the_extremum_marked(scene, artifac
     fig.savefig(os.path.join(artifacts, "monotone_check_plot.png"))
     # The report view gets one verdict per edge, a warning for the one that is not monotone.
     (message, warning) = spy.lines
-    assert message[0] == "PrintMessage" and message[1].startswith(f"{blend.Label}.Edge1: monotone: the curvature decreases")
+    assert message[0] == "PrintMessage"
+    assert message[1].startswith(f"{blend.Label}.Edge1: monotone: the curvature decreases")
     assert warning[0] == "PrintWarning" and warning[1].startswith(f"{arch.Label}.Edge1: not monotone")
     assert "span 0" in warning[1] and "maximum" in warning[1]
-    reports = dict(commands().check_links([(blend, "Edge1"), (arch, "Edge1")], path=os.path.join(artifacts, "x.png"))[0])
+    reports = dict(commands().check_links([(blend, "Edge1"), (arch, "Edge1")],
+                                          path=os.path.join(artifacts, "x.png"))[0])
     assert reports[f"{blend.Label}.Edge1"].monotone and not reports[f"{arch.Label}.Edge1"].monotone
     os.remove(os.path.join(artifacts, "x.png"))
     FreeCADGui.Selection.clearSelection()

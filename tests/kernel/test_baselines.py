@@ -119,7 +119,8 @@ BAD_POINTS = [
 
 
 @pytest.mark.parametrize("closed", [False, True])
-@pytest.mark.parametrize("points, message", BAD_POINTS, ids=["nan", "inf", "minus-inf-3d", "coincident", "coincident-3d"])
+@pytest.mark.parametrize("points, message", BAD_POINTS,
+                         ids=["nan", "inf", "minus-inf-3d", "coincident", "coincident-3d"])
 @pytest.mark.parametrize("function", BASELINES, ids=lambda f: f.__name__)
 def test_baselines_reject_non_finite_and_coincident_points(function, points, message, closed):
     with pytest.raises(fw.InputError, match=message):

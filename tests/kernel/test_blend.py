@@ -1,7 +1,6 @@
 """Basic shapes and the sphere-zone blend through the macro API, judged by OCCT
 evaluation of the returned Part geometry."""
 import math
-import os
 
 import numpy as np
 import pytest
@@ -46,7 +45,8 @@ def test_cylinder_cone_torus_patches_lie_on_their_surfaces():
     cone = fw.shapes.Cone(CENTER, 2.0, -0.3, NON_UNIFORM, [-1.0, 0.5, 4.0], axis=AXIS)
     assert max(abs(local(p)[0] - (2.0 - 0.3 * local(p)[1])) for s in cone.patches() for p in samples(s)) < 1e-9
     torus = fw.shapes.Torus(CENTER, 3.0, 1.0, NON_UNIFORM, [0.0, 0.7, 2.0, 4.0, 2 * math.pi], axis=AXIS)
-    assert max(abs(math.hypot(local(p)[0] - 3.0, local(p)[1]) - 1.0) for s in torus.patches() for p in samples(s)) < 1e-9
+    assert max(abs(math.hypot(local(p)[0] - 3.0, local(p)[1]) - 1.0)
+               for s in torus.patches() for p in samples(s)) < 1e-9
 
 
 def test_bad_partitions_raise_input_error():

@@ -10,7 +10,7 @@ import pytest
 import freecad_workbench as fw
 import freecad_workbench.blend as blend
 from freecad_workbench import _kernel
-from freecad_workbench.kernel import has_bridge, surface_to_part
+from freecad_workbench.kernel import blend_result, has_bridge, surface_to_part
 import Part
 
 S = fw.shapes
@@ -89,7 +89,7 @@ def test_neighbouring_patches_share_their_edges_and_only_the_open_ends_are_free(
     make, closed, poles = CASES[name]
     complex_ = make()
     k, r = complex_.pieces_u, len(complex_.knots_v) - 1
-    result = blend._result(complex_, single=False)
+    result = blend_result(complex_, single=False)
     shell = result.shell
     assert shell.isValid()
     assert len(shell.Faces) == len(result.patches) == k * r
@@ -149,8 +149,8 @@ def test_patches_are_the_shells_faces_and_the_kernels_patches_bit_for_bit(contin
 
 def test_the_whole_result_crosses_into_freecad_once(monkeypatch):
     adopted = []
-    adopt = blend.adopt
-    monkeypatch.setattr(blend, "adopt", lambda capsule: adopted.append(capsule) or adopt(capsule))
+    adopt = fw.kernel.adopt  # blend_result hands the whole complex over through kernel.adopt
+    monkeypatch.setattr(fw.kernel, "adopt", lambda capsule: adopted.append(capsule) or adopt(capsule))
     result = fw.blend_basic_shape(_zone())
     assert len(adopted) == 1
     assert len(result.patches) > 50 and result.surface is not None and result.shell.isValid()

@@ -52,7 +52,8 @@ def conics():
         ("circle", Conic(circle, lambda x, y: x * x + y * y - 4.0, lambda x, y: (2 * x, 2 * y))),
         ("ellipse", Conic(ellipse, lambda x, y: x * x / 9 + y * y / 1.44 - 1, lambda x, y: (2 * x / 9, 2 * y / 1.44))),
         ("parabola", Conic(parabola, lambda x, y: y * y - 3.2 * x, lambda x, y: (-3.2, 2 * y))),
-        ("hyperbola", Conic(hyperbola, lambda x, y: x * x / 9 - y * y / 1.44 - 1, lambda x, y: (2 * x / 9, -2 * y / 1.44))),
+        ("hyperbola", Conic(hyperbola, lambda x, y: x * x / 9 - y * y / 1.44 - 1,
+                            lambda x, y: (2 * x / 9, -2 * y / 1.44))),
     ]
 
 
@@ -152,7 +153,7 @@ def test_proposition_1_convex_polygons_give_no_curvature_sign_change():
 
 
 def test_from_edge_part_and_sketcher_geometry():
-    import Sketcher
+    import Sketcher  # noqa: F401  (registers Sketcher::SketchObject and Part.* sketch geometry)
 
     circle_edge = Part.makeCircle(2.0, V(1, 1, 0), V(0, 0, 1), 10, 200)
     arc = fw.basic.from_edge(circle_edge)

@@ -68,7 +68,8 @@ def test_the_kernel_checks_a_curve_before_it_reaches_occt():
         (curve(np.zeros((4, 1)), [0, 1], [4, 4]), "rows of 2 or 3 coordinates, not 1"),
         (curve(np.zeros((4, 3)), [], []), "at least 2 knots"),
         (curve(np.zeros((0, 3)), [0, 1], [4, 4]), "at least 2 poles"),
-        (curve([[0, 0, 0], [1, math.nan, 0], [2, 0, 0], [3, 0, 0]], [0, 1], [4, 4]), r"poles are not finite \(number 1"),
+        (curve([[0, 0, 0], [1, math.nan, 0], [2, 0, 0], [3, 0, 0]], [0, 1], [4, 4]),
+         r"poles are not finite \(number 1"),
         (curve(np.eye(4, 3), [0, math.inf], [4, 4]), "knots are not finite"),
     ]
     for kernel_curve, message in cases:
@@ -76,7 +77,8 @@ def test_the_kernel_checks_a_curve_before_it_reaches_occt():
             _kernel.edge_capsule(kernel_curve)
 
 
-@pytest.mark.parametrize("curve", [Part.Line(), Part.Hyperbola(), Part.Parabola()], ids=["line", "hyperbola", "parabola"])
+@pytest.mark.parametrize("curve", [Part.Line(), Part.Hyperbola(), Part.Parabola()],
+                         ids=["line", "hyperbola", "parabola"])
 def test_unbounded_curves_are_named_and_asked_to_be_trimmed(curve):
     for call in (fw.check_monotone_curvature, lambda c: fw.curvature_profile(c, 64),
                  lambda c: fw.revolve_profile(c, (0, 0, 0), (0, 0, 1))):

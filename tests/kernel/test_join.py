@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 import freecad_workbench as fw
-import FreeCAD
 import Part
 
 NON_UNIFORM = [0.0, 0.4, 1.5, 2.1, 3.9, 4.3, 5.2, 2 * math.pi]

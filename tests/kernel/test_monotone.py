@@ -20,7 +20,8 @@ def random_frame(rng, in_space):
     if not in_space:
         origin[2] = 0.0
         angle = rng.uniform(0, 2 * math.pi)
-        return origin, np.array([math.cos(angle), math.sin(angle), 0.0]), np.array([-math.sin(angle), math.cos(angle), 0.0])
+        return (origin, np.array([math.cos(angle), math.sin(angle), 0.0]),
+                np.array([-math.sin(angle), math.cos(angle), 0.0]))
     q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
     return origin, q[:, 0], q[:, 1]
 

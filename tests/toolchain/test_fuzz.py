@@ -48,7 +48,7 @@ def test_the_sanitizer_targets_install_clang_and_its_runtimes():
 def test_the_fuzz_build_refuses_gcc(tmp_path):
     gxx = shutil.which("g++")
     assert gxx, "g++ is not installed (make deps installs it)"
-    run = subprocess.run(["cmake", "-S", REPO, "-B", str(tmp_path), f"-DCMAKE_CXX_COMPILER={gxx}", "-DFAIRSPLINES_FUZZ=ON"],
-                         capture_output=True, text=True, timeout=120)
+    run = subprocess.run(["cmake", "-S", REPO, "-B", str(tmp_path), f"-DCMAKE_CXX_COMPILER={gxx}",
+                          "-DFAIRSPLINES_FUZZ=ON"], capture_output=True, text=True, timeout=120)
     assert run.returncode != 0
     assert "FAIRSPLINES_FUZZ needs clang" in run.stdout + run.stderr

@@ -1,7 +1,6 @@
 """Blend basic shape feature, headless: builds for every kind (the patches themselves are
 judged in tests/kernel/test_blend.py), recompute after a change, the naive variant, uniform
 lists, save/reopen, undo, and the error state that keeps the last good shape."""
-import os
 
 import numpy as np
 import pytest
@@ -131,7 +130,8 @@ def test_undo_removes_the_feature(doc):
 @pytest.mark.parametrize(
     "change, message",
     [
-        (dict(Uniform=False, Longitudes=[0.0, 90.0, 90.0, 360.0]), "longitudes: value 2 (90°) must be greater than value 1 (90°)"),
+        (dict(Uniform=False, Longitudes=[0.0, 90.0, 90.0, 360.0]),
+         "longitudes: value 2 (90°) must be greater than value 1 (90°)"),
         (dict(Uniform=False, Longitudes=[0.0, 180.0, 360.0, 400.0]), "more than a full turn"),
         (dict(Radius=0.0), "radius"),
         (dict(AroundCount=0), "at least 1"),

@@ -72,7 +72,8 @@ def test_ellipse_parabola_hyperbola_satisfy_their_equations(doc):
     np.testing.assert_allclose(p[:, 0], p[:, 1] ** 2 / 10, atol=1e-12)
     np.testing.assert_allclose([ends(parabola)[0][1], ends(parabola)[1][1]], [-4, 6], atol=1e-12)
 
-    hyperbola = make_basic_curve(doc, "Hyperbola arc", MajorRadius=3, MinorRadius=2, StartParameter=-1, EndParameter=1.5)
+    hyperbola = make_basic_curve(doc, "Hyperbola arc", MajorRadius=3, MinorRadius=2, StartParameter=-1,
+                                 EndParameter=1.5)
     p = local_points(hyperbola)
     np.testing.assert_allclose((p[:, 0] / 3) ** 2 - (p[:, 1] / 2) ** 2, 1, rtol=1e-12, atol=1e-11)
     np.testing.assert_allclose(ends(hyperbola)[1], [3 * math.cosh(1.5), 2 * math.sinh(1.5), 0], atol=1e-12)

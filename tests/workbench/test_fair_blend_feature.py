@@ -1,7 +1,6 @@
 """The Fair blend feature, headless: G2 by default between edges (curvatures matched as OCCT
 evaluates the edges), the warning state where no monotone curve exists, following sources,
 save/reopen/recompute, and the migration of Monotone blend documents (version 1)."""
-import math
 
 import numpy as np
 import pytest

@@ -103,7 +103,8 @@ def check_links(links, path=None):
     if not plotted:
         return results, None
     marks = [
-        (i, s.extremum[0], f"{label}: curvature {'maximum' if s.extremum[2] else 'minimum'}", "v" if s.extremum[2] else "^")
+        (i, s.extremum[0], f"{label}: curvature {'maximum' if s.extremum[2] else 'minimum'}",
+         "v" if s.extremum[2] else "^")
         for i, (_, label, report) in enumerate(plotted)
         for s in report.spans
         if s.extremum
@@ -150,7 +151,8 @@ class AnalysisGroup:
     def GetResources(self):
         return {
             "MenuText": QT_TRANSLATE_NOOP(GROUP, "Curvature analysis"),
-            "ToolTip": QT_TRANSLATE_NOOP(GROUP, "Curvature comb, curvature plot, monotonicity check, zebra profile test"),
+            "ToolTip": QT_TRANSLATE_NOOP(GROUP,
+                                         "Curvature comb, curvature plot, monotonicity check, zebra profile test"),
         }
 
     def IsActive(self):

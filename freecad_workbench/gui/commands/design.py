@@ -265,4 +265,3 @@ def command_objects():
     commands[EditPolygonCommand.NAME] = EditPolygonCommand()
     commands[ProfileTestCommand.NAME] = ProfileTestCommand()
     return commands
-

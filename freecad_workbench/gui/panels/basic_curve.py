@@ -217,4 +217,3 @@ class BasicCurvePanel(LiveEditPanel):
         show_status(self.status_label, self.obj.Status)
 
     # --- task dialog -----------------------------------------------------------------
-

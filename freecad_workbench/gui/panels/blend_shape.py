@@ -135,8 +135,8 @@ class BlendShapePanel(LiveEditPanel):
         self.continuity.currentIndexChanged.connect(lambda i: self.set_continuity(CONTINUITIES[i]))
         bottom.addRow(translate("FairSplines", "Continuous in"), self.continuity)
         self.naive = QtWidgets.QCheckBox(translate("FairSplines", "Plain join"))
-        self.naive.setToolTip(translate("FairSplines", "To compare: the paper's naive blend (Fig. 2a), the shape "
-                                                       "and the ring joined without the transition strip; its seams show"))
+        self.naive.setToolTip(translate("FairSplines", "To compare: the paper's naive blend (Fig. 2a), the shape and "
+                                                       "the ring joined without the transition strip; its seams show"))
         self.naive.setChecked(bool(obj.Naive))
         self.naive.toggled.connect(self.set_naive)
         bottom.addRow(self.naive)
@@ -164,8 +164,8 @@ class BlendShapePanel(LiveEditPanel):
         freeform_layout.addLayout(buttons)
         join_row = form_rows()
         self.join_to = compact(QtWidgets.QComboBox(), 120)
-        self.join_to.setToolTip(translate("FairSplines", "Join another Blend basic shape instead of a ring "
-                                                         "(Figs. 9-12): this profile's end to the start of its profile"))
+        self.join_to.setToolTip(translate("FairSplines", "Join another Blend basic shape instead of a ring (Figs. "
+                                                         "9-12): this profile's end to the start of its profile"))
         self._join_choices = []
         self._fill_join_choices()
         self.join_to.currentIndexChanged.connect(lambda i: self.set_join_to(self._join_choices[i]))

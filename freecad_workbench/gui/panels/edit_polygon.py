@@ -265,5 +265,3 @@ class EditPolygonPanel(LiveEditPanel):
                     pass
         self._callbacks = []
         self.overlay.detach()
-
-

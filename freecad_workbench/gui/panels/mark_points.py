@@ -4,9 +4,10 @@ place the points").
 
 One slider per mark on each piece, with a spin box for the exact value. A slider spans
 the whole piece, so its handle shows where the mark is; marks stay strictly increasing
-inside (0, 1): a mark moved onto or past a neighbour stops one step (1e-4) short of it. Every move recomputes the design at once (live preview) and redraws, in the
-3D view, the marked points on the basic curves (black, the one being moved red) and the
-control polygon of the result (green, Fig. 10a). "Add mark" puts a new mark in the middle
+inside (0, 1): a mark moved onto or past a neighbour stops one step (1e-4) short of it.
+Every move recomputes the design at once (live preview) and redraws, in the 3D view, the
+marked points on the basic curves (black, the one being moved red) and the control
+polygon of the result (green, Fig. 10a). "Add mark" puts a new mark in the middle
 of the piece's widest gap; "Remove" drops a mark; "Reversed" runs the piece the other
 way (its marks stay on the same points). OK keeps the changes as one undo step, Cancel
 restores the marks the panel opened with.
@@ -145,7 +146,8 @@ class MarkPointsPanel(LiveEditPanel):
             spin.valueChanged.connect(lambda value, p=piece, i=index: self._spin_changed(p, i, value))
             remove.clicked.connect(lambda checked=False, p=piece, i=index: self.remove_mark(p, i))
             number = QtWidgets.QLabel(str(index + 1))
-            number.setToolTip(translate("FairSplines", "Mark {} of this piece (its parameter u in 0..1)").format(index + 1))
+            number.setToolTip(
+                translate("FairSplines", "Mark {} of this piece (its parameter u in 0..1)").format(index + 1))
             grid.addWidget(number, index, 0)
             grid.addWidget(slider, index, 1)
             grid.addWidget(spin, index, 2)
@@ -269,7 +271,8 @@ class MarkPointsPanel(LiveEditPanel):
             if error:
                 notes.append(error)
             if piece < len(added) and added[piece]:
-                notes.append(translate("FairSplines", "{} mark(s) added to keep the weights positive").format(added[piece]))
+                notes.append(
+                    translate("FairSplines", "{} mark(s) added to keep the weights positive").format(added[piece]))
             info.setText("; ".join(notes))
             info.setVisible(bool(notes))
         self.overlay.set_points(self.mark_points())
@@ -292,4 +295,3 @@ class MarkPointsPanel(LiveEditPanel):
     def finish(self):
         """Remove the overlay (called when the edit ends, however it ends)."""
         self.overlay.detach()
-

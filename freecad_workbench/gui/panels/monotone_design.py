@@ -77,7 +77,8 @@ class MonotoneDesignTaskPanel:
         self.table.blockSignals(True)
         self.table.setRowCount(1 + len(diffs))
         self.table.setVerticalHeaderLabels(
-            [translate("FairSplines", "Start")] + [translate("FairSplines", "Step {}").format(i + 1) for i in range(len(diffs))])
+            [translate("FairSplines", "Start")]
+            + [translate("FairSplines", "Step {}").format(i + 1) for i in range(len(diffs))])
         rows = [first] + list(diffs)
         for r, (x, y) in enumerate(rows):
             for c, value in enumerate((x, y)):
@@ -184,4 +185,3 @@ class MonotoneDesignTaskPanel:
             gui_doc.resetEdit()
         if FreeCADGui.Control.activeDialog():
             FreeCADGui.Control.closeDialog()
-

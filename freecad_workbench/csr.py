@@ -1,13 +1,20 @@
 """Curve constructions of the csr paper (Karčiauskas & Peters, "Curvature-sensitive
 splines and design with basic curves") and the baselines they are compared with.
 Every function returns a FreeCAD ``Part.BSplineCurve``."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Optional, Sequence
+
 import numpy as np
 
-from . import _kernel
-from .kernel import adopt, as_choice, as_flag, as_points, as_real, as_reals, has_bridge, to_part
+from . import kernel
+from .kernel import PointsLike, adopt, as_choice, as_flag, as_points, as_real, as_reals, has_bridge, to_part
+
+if TYPE_CHECKING:
+    import Part
 
 PARAMETRIZATIONS = ("chordal", "centripetal", "uniform")
-EPSILON_RULES = {"case": _kernel.EpsilonRule.CaseDistinction, "additive": _kernel.EpsilonRule.Additive}
+EPSILON_RULES = {"case": kernel.EpsilonRule.CaseDistinction, "additive": kernel.EpsilonRule.Additive}
 _NO_PARAMETERS = np.zeros(0)  # read only by the kernel
 
 
@@ -15,7 +22,8 @@ def _check_parametrization(parametrization):
     as_choice(parametrization, "parametrization", PARAMETRIZATIONS)
 
 
-def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, epsilon_rule="case", parameters=None):
+def csr_spline(points: PointsLike, closed: bool = False, parametrization: str = "chordal", epsilon: float = 1e-9,
+               epsilon_rule: str = "case", parameters: Optional[Sequence[float]] = None) -> Part.BSplineCurve:
     """Curvature-sensitive relaxed spline (Section 4, eq. (6)) through sampled data.
 
     A cubic C2 B-spline with a knot per sample. It stays close to the samples without
@@ -34,33 +42,36 @@ def csr_spline(points, closed=False, parametrization="chordal", epsilon=1e-9, ep
     as_choice(epsilon_rule, "epsilon_rule", EPSILON_RULES)
     q = as_points(points)
     t = _NO_PARAMETERS if parameters is None else as_reals(parameters, "parameters")
-    args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False), EPSILON_RULES[epsilon_rule], t)
+    args = (q, as_flag(closed, "closed"), parametrization, as_real(epsilon, "epsilon", finite=False),
+            EPSILON_RULES[epsilon_rule], t)
     if has_bridge():  # the fit goes straight into an OCCT edge that FreeCAD adopts
-        return adopt(_kernel.csr_edge_capsule(*args)).Edge1.Curve
-    return to_part(_kernel.csr_spline(*args))
+        return adopt(kernel.csr_edge_capsule(*args)).Edge1.Curve
+    return to_part(kernel.csr_spline(*args))
 
 
-def interpolate_classic(points, closed=False, parametrization="chordal"):
+def interpolate_classic(points: PointsLike, closed: bool = False,
+                        parametrization: str = "chordal") -> Part.BSplineCurve:
     """Classic C2 cubic interpolation (OCCT GeomAPI_Interpolate), the baseline."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
+    return to_part(kernel.classic_interpolation(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
-def quasi_interpolant(points, closed=False, parametrization="chordal"):
+def quasi_interpolant(points: PointsLike, closed: bool = False, parametrization: str = "chordal") -> Part.BSplineCurve:
     """The cubic quasi-interpolant, (-1, 8, -1)/6 for uniform parameters (Fig. 2e)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quasi_interpolant(as_points(points), as_flag(closed, "closed"), parametrization))
+    return to_part(kernel.quasi_interpolant(as_points(points), as_flag(closed, "closed"), parametrization))
 
 
-def control_point_spline(points, closed=False):
+def control_point_spline(points: PointsLike, closed: bool = False) -> Part.BSplineCurve:
     """The cubic B-spline that uses the data as control points (Fig. 2f, red)."""
-    return to_part(_kernel.control_point_spline(as_points(points), as_flag(closed, "closed")))
+    return to_part(kernel.control_point_spline(as_points(points), as_flag(closed, "closed")))
 
 
-def quadratic_design(points, closed=False, parametrization="chordal", epsilon=1e-9):
+def quadratic_design(points: PointsLike, closed: bool = False, parametrization: str = "chordal",
+                     epsilon: float = 1e-9) -> Part.BSplineCurve:
     """Quadratic design (Section 7, eq. (12)): sparse points to quadratic Bézier pieces
     {q_i, m_i, q_(i+1)} whose handles m_i are the poles between the data points.
     Returns a degree-2 Part.BSplineCurve (C0 at the data points, exact quadratics)."""
     _check_parametrization(parametrization)
-    return to_part(_kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
-                                             as_real(epsilon, "epsilon", finite=False)))
+    return to_part(kernel.quadratic_design(as_points(points), as_flag(closed, "closed"), parametrization,
+                                           as_real(epsilon, "epsilon", finite=False)))
