@@ -53,10 +53,9 @@ point3 = _point(3)
 
 
 @st.composite
-def point_lists(draw, huge=True):
+def point_lists(draw):
     kinds = ["2d", "3d"] * 6 + ["dup", "collinear", "mixed", "ragged", "empty",
-                                 "one", "array", "badarray", "strings", "nested", "vectors", "tiny"]
-    kinds += ["huge"] if huge else []
+                                "one", "array", "badarray", "strings", "nested", "vectors", "tiny", "huge"]
     kind = draw(st.sampled_from(kinds))
     if kind in ("2d", "3d"):
         return draw(st.lists(point2 if kind == "2d" else point3, min_size=draw(st.sampled_from([0, 3, 3, 3])),
