@@ -7,9 +7,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "fairsplines/blend_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/g1_to_c1.hpp"
+#include "blend_detail.hpp"
 
 namespace fairsplines {
 

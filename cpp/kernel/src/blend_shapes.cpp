@@ -1,6 +1,6 @@
 #include "fairsplines/blend_shapes.hpp"
 
-#include "fairsplines/blend_detail.hpp"
+#include "blend_detail.hpp"
 
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

@@ -10,10 +10,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fairsplines/blend_detail.hpp"
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "blend_detail.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

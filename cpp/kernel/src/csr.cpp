@@ -1,7 +1,7 @@
 // csr-spline, Section 4, eq. (6), and quadratic design, Section 7, eq. (12), of
 // Karčiauskas & Peters, "Curvature-sensitive splines and design with basic curves".
 #include "fairsplines/csr.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "fairsplines/bspline.hpp"
-#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
-#include "fairsplines/vectorise.hpp"
+#include "csr_detail.hpp"
+#include "vectorise.hpp"
 
 namespace fairsplines {
 namespace detail {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "fairsplines/finite.hpp"
 #include "fairsplines/errors.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "fairsplines/analysis.hpp"
-#include "fairsplines/finite.hpp"
-#include "fairsplines/monotone_detail.hpp"
 #include "fairsplines/occt.hpp"
+#include "finite.hpp"
+#include "monotone_detail.hpp"
 
 namespace fairsplines {
 
