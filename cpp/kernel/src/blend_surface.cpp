@@ -12,6 +12,7 @@
 
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/errors.hpp"
+#include "bernstein.hpp"
 #include "blend_detail.hpp"
 #include "finite.hpp"
 
@@ -257,15 +258,11 @@ RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd&
 
 /// Degree raise in u of a homogeneous patch of degree (du, dv) to degree 6 in u (du = 3).
 Homogeneous4 raiseU(const Homogeneous4& patch, int du, int dv) {
-  if (du == 6) return patch;
-  Homogeneous4 out(7 * (dv + 1), 4);
-  for (int b = 0; b <= dv; ++b) {
-    PointMatrix column(du + 1, 4);
-    for (int a = 0; a <= du; ++a) column.row(a) = patch.row(a * (dv + 1) + b);
-    const PointMatrix raised = raiseCubicToSextic(column);
-    for (int a = 0; a <= 6; ++a) out.row(a * (dv + 1) + b) = raised.row(a);
-  }
-  return out;
+  TaggedPatch p;
+  p.degreeU = du;
+  p.degreeV = dv;
+  p.bezier = patch;
+  return raisePatch(p, 6, dv).bezier;
 }
 
 /// Second-order Hermite data (three layers) of both sides, degree-raised to 5 in v: rows
@@ -304,21 +301,6 @@ TaggedPatch stripPatch(int k, int vPiece, int degreeU, const Homogeneous4& lower
   return strip;
 }
 
-/// de Casteljau: the Bézier rows b split at t into the pieces over [0, t] and [t, 1].
-void splitBezier(const PointMatrix& b, double t, PointMatrix& left, PointMatrix& right) {
-  const Eigen::Index n = b.rows() - 1;
-  PointMatrix work = b;
-  left.resize(n + 1, b.cols());
-  right.resize(n + 1, b.cols());
-  left.row(0) = work.row(0);
-  right.row(n) = work.row(n);
-  for (Eigen::Index r = 1; r <= n; ++r) {
-    for (Eigen::Index i = 0; i <= n - r; ++i) work.row(i) = (1 - t) * work.row(i) + t * work.row(i + 1);
-    left.row(r) = work.row(0);
-    right.row(n - r) = work.row(n - r);
-  }
-}
-
 }  // namespace
 
 namespace detail {
@@ -340,7 +322,7 @@ SplitPieces splitBezierPieces(const PointMatrix& bezier, int order, const Eigen:
     for (double x : cuts[k]) {
       if (!(x > done && x < 1.0)) throw InputError("cuts must increase strictly inside (0, 1)");
       PointMatrix left, right;
-      splitBezier(rest, (x - done) / (1.0 - done), left, right);
+      bernstein::split(rest, (x - done) / (1.0 - done), left, right);
       pieces.push_back(left);
       t.push_back(knots[k] + x * (knots[k + 1] - knots[k]));
       rest = right;
@@ -917,39 +899,28 @@ Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam metho
 }
 
 TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {
+  // Row a (degreeV + 1) + b of a patch is b_ab: each column (fixed b) is a Bézier curve in
+  // u, each row (fixed a) one in v; both are raised by bernstein::raise.
   TaggedPatch out = patch;
-  auto at = [](const TaggedPatch& p, int a, int b) { return p.bezier.row(a * (p.degreeV + 1) + b); };
-  while (out.degreeU < du) {  // b'_a = a/(n+1) b_{a-1} + (1 - a/(n+1)) b_a
-    TaggedPatch next = out;
-    const int n = out.degreeU;
-    next.degreeU = n + 1;
-    next.bezier.resize((n + 2) * (out.degreeV + 1), 4);
-    for (int a = 0; a <= n + 1; ++a) {
-      for (int b = 0; b <= out.degreeV; ++b) {
-        const double f = static_cast<double>(a) / (n + 1);
-        Eigen::RowVector4d v = Eigen::RowVector4d::Zero();
-        if (a > 0) v += f * at(out, a - 1, b);
-        if (a <= n) v += (1 - f) * at(out, a, b);
-        next.bezier.row(a * (out.degreeV + 1) + b) = v;
-      }
+  if (out.degreeU < du) {
+    const int ev = out.degreeV + 1;
+    Homogeneous4 raised((du + 1) * ev, 4), column(out.degreeU + 1, 4);
+    for (int b = 0; b < ev; ++b) {
+      for (int a = 0; a <= out.degreeU; ++a) column.row(a) = out.bezier.row(a * ev + b);
+      const Homogeneous4 c = bernstein::raise(column, du);
+      for (int a = 0; a <= du; ++a) raised.row(a * ev + b) = c.row(a);
     }
-    out = next;
+    out.bezier = std::move(raised);
+    out.degreeU = du;
   }
-  while (out.degreeV < dv) {
-    TaggedPatch next = out;
-    const int n = out.degreeV;
-    next.degreeV = n + 1;
-    next.bezier.resize((out.degreeU + 1) * (n + 2), 4);
+  if (out.degreeV < dv) {
+    const int ev = out.degreeV + 1;
+    Homogeneous4 raised((out.degreeU + 1) * (dv + 1), 4);
     for (int a = 0; a <= out.degreeU; ++a) {
-      for (int b = 0; b <= n + 1; ++b) {
-        const double f = static_cast<double>(b) / (n + 1);
-        Eigen::RowVector4d v = Eigen::RowVector4d::Zero();
-        if (b > 0) v += f * at(out, a, b - 1);
-        if (b <= n) v += (1 - f) * at(out, a, b);
-        next.bezier.row(a * (n + 2) + b) = v;
-      }
+      raised.middleRows(a * (dv + 1), dv + 1) = bernstein::raise(out.bezier.middleRows(a * ev, ev), dv);
     }
-    out = next;
+    out.bezier = std::move(raised);
+    out.degreeV = dv;
   }
   return out;
 }
