@@ -1,5 +1,6 @@
 // Internal helpers of the blend complexes (Section 4.2 and Section 5 of Karčiauskas &
-// Peters), shared by the C2 (blend_surface.cpp) and C1 (G1 to C1) constructions.
+// Peters), shared by the C2 (blend_profile.cpp, blend_ring.cpp, blend_surface.cpp, blend_grid.cpp)
+// and C1 (blend_c1.cpp) constructions.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <vector>
