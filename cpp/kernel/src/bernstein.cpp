@@ -20,4 +20,12 @@ Eigen::VectorXd product(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return c;
 }
 
+PointMatrix composeQuadratic(const PointMatrix& quadratic, const Eigen::VectorXd& rbar, const Eigen::VectorXd& rlow) {
+  const Eigen::VectorXd diff = rlow - rbar;
+  const Eigen::VectorXd basis[3] = {product(diff, diff), 2 * product(diff, rbar), product(rbar, rbar)};
+  PointMatrix out = PointMatrix::Zero(basis[0].size(), quadratic.cols());
+  for (int k = 0; k < 3; ++k) out += basis[k] * quadratic.row(k);
+  return out;
+}
+
 }  // namespace fairsplines::bernstein

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <utility>
 
+#include "fairsplines/types.hpp"
+
 namespace fairsplines::bernstein {
 
 // ---------------------------------------------------------------------------------------
@@ -24,6 +26,12 @@ double binomial(int n, int k);
 /// degrees m and n (the result has degree m + n):
 /// c_k = sum_{i+j=k} C(m,i) a_i C(n,j) b_j / C(m+n,k).
 Eigen::VectorXd product(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
+
+/// Eq. (9) of the blending paper: a homogeneous quadratic (3 Bézier rows, any number of
+/// columns) composed with the rational map r = rbar / rlow (numerator and denominator in
+/// Bernstein form of one degree m), common denominators dropped:
+/// sum_k q_k C(2,k) (rlow - rbar)^{2-k} rbar^k, in Bernstein form of degree 2m (2m + 1 rows).
+PointMatrix composeQuadratic(const PointMatrix& quadratic, const Eigen::VectorXd& rbar, const Eigen::VectorXd& rlow);
 
 // ---------------------------------------------------------------------------------------
 // de Casteljau

@@ -3,6 +3,7 @@
 // and C1 (blend_c1.cpp) constructions.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <string>
 #include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
@@ -20,6 +21,12 @@ Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix
 /// Bézier patch (knots inside it).
 Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
                       int& dv);
+
+/// The exact rational Bézier Geom_BSplineSurface over [0,1]^2 of homogeneous rows (w p, w),
+/// row a (degreeV + 1) + b holding b_ab. Throws InputError naming `what` for control points
+/// that are not finite, for a non-positive weight, or where OpenCASCADE rejects the patch.
+Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int degreeU, int degreeV,
+                                              const std::string& what);
 
 /// Heights of a cylinder or cone profile (radius radius0 + slope z): at least two, finite,
 /// increasing, with a positive radius at each. Throws InputError naming the first offender.

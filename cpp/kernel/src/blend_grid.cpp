@@ -119,28 +119,7 @@ Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam metho
 Handle(Geom_BSplineSurface) patchToOcct(const TaggedPatch& patch) {
   const int nu = patch.degreeU + 1, nv = patch.degreeV + 1;
   if (patch.bezier.rows() != nu * nv) throw InputError("a patch needs (degreeU + 1) (degreeV + 1) points");
-  TColgp_Array2OfPnt poles(1, nu, 1, nv);
-  TColStd_Array2OfReal weights(1, nu, 1, nv);
-  for (int a = 0; a < nu; ++a) {
-    for (int b = 0; b < nv; ++b) {
-      const auto h = patch.bezier.row(a * nv + b);
-      requireFinite(h, "a patch of the blend", "homogeneous control points");
-      if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
-      poles.SetValue(a + 1, b + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
-      weights.SetValue(a + 1, b + 1, h[3]);
-    }
-  }
-  TColStd_Array1OfReal knots(1, 2);
-  knots.SetValue(1, 0.0);
-  knots.SetValue(2, 1.0);
-  TColStd_Array1OfInteger multsU(1, 2), multsV(1, 2);
-  multsU.Init(nu);
-  multsV.Init(nv);
-  try {
-    return new Geom_BSplineSurface(poles, weights, knots, knots, multsU, multsV, patch.degreeU, patch.degreeV);
-  } catch (const Standard_Failure& failure) {
-    throw InputError(std::string("OpenCASCADE rejected the patch: ") + failure.GetMessageString());
-  }
+  return detail::bezierPatchToOcct(patch.bezier, patch.degreeU, patch.degreeV, "a patch of the blend");
 }
 
 TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {

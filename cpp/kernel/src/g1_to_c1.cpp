@@ -40,13 +40,9 @@ std::array<Reparam2, 2> etaSplit(double a0, double a1) {
 }
 
 PointMatrix composeQuadratic2(const PointMatrix& q, const Reparam2& eta) {
-  // Bernstein products of degree 2 x 2 -> 4: (low - bar)^2, 2 (low - bar) bar, bar^2.
-  const Eigen::Vector3d bar = eta.col(0), low = eta.col(1), diff = low - bar;
-  const Eigen::VectorXd basis[3] = {bernstein::product(diff, diff), 2 * bernstein::product(diff, bar),
-                                    bernstein::product(bar, bar)};
-  PointMatrix out = PointMatrix::Zero(5, q.cols());
-  for (int k = 0; k < 3; ++k) out += basis[k] * q.row(k);
-  return out;
+  // Eq. (9) with a quadratic map: Bernstein products of degree 2 x 2 -> 4, (low - bar)^2,
+  // 2 (low - bar) bar, bar^2.
+  return bernstein::composeQuadratic(q, eta.col(0), eta.col(1));
 }
 
 C1QuarticSpline g1ToC1(const PointMatrix& quadratics, const Eigen::VectorXd& beta, const Eigen::VectorXd& betaT,

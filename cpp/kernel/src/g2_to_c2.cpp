@@ -279,12 +279,7 @@ std::vector<Reparam> sigmaMaps(const G2CircleSpline& circle, const Eigen::Vector
 
 PointMatrix composeQuadratic(const PointMatrix& quadratic, const Reparam& r) {
   // Eq. (9): sum_k q_k binom(2,k) (rlow - rbar)^{2-k} rbar^k, in Bernstein form of degree 6.
-  const Eigen::VectorXd rbar = r.col(0), rlow = r.col(1), diff = rlow - rbar;
-  const Eigen::VectorXd basis[3] = {bernstein::product(diff, diff), 2 * bernstein::product(diff, rbar),
-                                    bernstein::product(rbar, rbar)};
-  PointMatrix out = PointMatrix::Zero(7, quadratic.cols());
-  for (int k = 0; k < 3; ++k) out += basis[k] * quadratic.row(k);
-  return out;
+  return bernstein::composeQuadratic(quadratic, r.col(0), r.col(1));
 }
 
 PointMatrix hermiteQuadratic(const PointMatrix& cubic, double t0) {

@@ -19,12 +19,6 @@
 
 namespace fairsplines {
 
-using detail::Vec2;
-using detail::Vec3;
-using detail::cross;
-using detail::degrees;
-using detail::kPi;
-using detail::num;
 using detail::PlanarCurve;
 using detail::planarCurve;
 

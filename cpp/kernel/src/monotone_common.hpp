@@ -59,3 +59,15 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol);
 bool inFairLocation(const Vec2& q, const Vec2& A, const Vec2& D, double slack);
 
 }  // namespace fairsplines::detail
+
+namespace fairsplines {
+
+// The monotone sources use the shared names unqualified.
+using detail::Vec2;
+using detail::Vec3;
+using detail::cross;
+using detail::degrees;
+using detail::kPi;
+using detail::num;
+
+}  // namespace fairsplines
