@@ -28,6 +28,20 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
 Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int degreeU, int degreeV,
                                               const std::string& what);
 
+/// The interface data of a straight profile rho = radius0 + slope z over `heights` (checked
+/// by checkHeights), for the C2 and the C1 shapes alike: (rho, zeta) at the last and first
+/// height, the unit direction leaving each, and the length of the end pieces.
+template <class Profile>
+void setLineEnds(Profile& p, double radius0, double slope, const Eigen::VectorXd& heights) {
+  const Eigen::Index m = heights.size() - 1;
+  p.end << radius0 + slope * heights[m], heights[m];
+  p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
+  p.size = heights[m] - heights[m - 1];
+  p.start << radius0 + slope * heights[0], heights[0];
+  p.startTangent = -p.tangent;
+  p.startSize = heights[1] - heights[0];
+}
+
 /// Heights of a cylinder or cone profile (radius radius0 + slope z): at least two, finite,
 /// increasing, with a positive radius at each. Throws InputError naming the first offender.
 void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope);

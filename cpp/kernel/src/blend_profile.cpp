@@ -109,12 +109,7 @@ RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd&
     p.sextic.push_back(Homogeneous3(raised));
   }
   p.sexticKnots = heights.array() - heights[0];
-  p.end << radius0 + slope * heights[m], heights[m];
-  p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
-  p.size = heights[m] - heights[m - 1];
-  p.start << radius0 + slope * heights[0], heights[0];
-  p.startTangent = -p.tangent;
-  p.startSize = heights[1] - heights[0];
+  setLineEnds(p, radius0, slope, heights);
   return p;
 }
 
