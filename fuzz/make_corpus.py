@@ -467,6 +467,7 @@ CRASH_SEEDS = {
         "spiral_theta1_1.8e308_d1_nan",
     ],
     "fuzz_blend_shapes": [
+        "cone_radius0_dblmax_pole_inf",
         "sphere_radius_1.7e308_patch_nan",
         "circle_to_c2_beta_t_1e-300_inf",
         "cone_denormal_height_step_inf_beta",
@@ -524,6 +525,7 @@ CRASH_SEEDS = {
         "g2_k1_-1e300_float_to_int_overflow",
     ],
     "fuzz_monotone": [
+        "alg2_nearly_straight_inf_pole",
         "algorithm1_denormal_knot_too_close",
         "algorithm1_differences_1.7e308_nan_pole",
         "algorithm1_moved_inf",

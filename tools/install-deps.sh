@@ -12,8 +12,13 @@ packages=(
 # `install-deps.sh sanitizers` (make fuzz, make test-sanitize): also clang with its
 # sanitizer and libFuzzer runtimes, and llvm for llvm-symbolizer (stack traces).
 sanitizer_packages=(clang libclang-rt-dev llvm)
+# `install-deps.sh format` (make format, make format-check): clang-format (14 on Debian 12).
+format_packages=(clang-format)
 if [ "${1:-}" = sanitizers ]; then
   packages+=("${sanitizer_packages[@]}")
+fi
+if [ "${1:-}" = format ]; then
+  packages+=("${format_packages[@]}")
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -108,7 +108,8 @@ void bindBlend(py::module_& m) {
       .def_readonly("gamma", &G2CircleSpline::gamma)
       .def_readonly("closed", &G2CircleSpline::closed)
       .def_readonly("cubic", &G2CircleSpline::cubic);
-  m.def("g2_circle", &g2Circle, "theta"_a);
+  m.def("g2_circle", &g2Circle, "theta"_a,
+        "Eq. (2): the G2 rational cubic pieces of the unit circle at the angles theta (closed when they span 2 pi).");
 
   py::class_<G2Surface>(m, "G2Surface", "Rational bicubic G2 patches of a basic shape (homogeneous Bézier rows).")
       .def_readonly("nu", &G2Surface::nu)
@@ -129,28 +130,35 @@ void bindBlend(py::module_& m) {
          const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes) {
         return sphereZone(frameOf(o, x, y), radius, longitudes, latitudes);
       },
-      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a);
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a,
+      "A sphere zone or dome as a G2 rational bicubic surface (eq. (2) both ways): longitudes around the frame's z, "
+      "latitudes in [-pi/2, pi/2], increasing.");
   m.def(
       "cylinder",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
          const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
         return cylinder(frameOf(o, x, y), radius, angles, heights);
       },
-      "origin"_a, "x"_a, "y"_a, "radius"_a, "angles"_a, "heights"_a);
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "angles"_a, "heights"_a,
+      "A circular cylinder as a G2 rational bicubic surface: angles around the frame's z, increasing heights.");
   m.def(
       "cone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
          const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
         return cone(frameOf(o, x, y), radius0, slope, angles, heights);
       },
-      "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a);
+      "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a,
+      "A cone of radius radius0 + slope z as a G2 rational bicubic surface: angles around the frame's z, increasing "
+      "heights.");
   m.def(
       "torus",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
          const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV) {
         return torus(frameOf(o, x, y), R, r, anglesU, anglesV);
       },
-      "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a);
+      "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a,
+      "A torus (0 < r < R) as a G2 rational bicubic surface: angles_u around the frame's z, angles_v around the "
+      "tube (0 = outer equator).");
 
   py::class_<C2SexticSpline>(m, "C2SexticSpline", "Sextic pieces, C2 in homogeneous space (Section 4.1).")
       .def_readonly("bezier", &C2SexticSpline::bezier)
@@ -163,7 +171,9 @@ void bindBlend(py::module_& m) {
       [](const G2CircleSpline& c, const std::string& method, const Eigen::VectorXd& betaT) {
         return circleToC2(c, methodOf(method), betaT);
       },
-      "circle"_a, "method"_a = "rho", "beta_t"_a = Eigen::VectorXd());
+      "circle"_a, "method"_a = "rho", "beta_t"_a = Eigen::VectorXd(),
+      "Section 4.1: the G2 circle partition as C2 sextic pieces (method 'rho', 'sigma' or 'mixed'; beta_t empty: "
+      "the circle's beta).");
 
   py::class_<BlendComplex>(m, "BlendComplex", "Tagged patches of a blend (Section 4.2).")
       .def_readonly("knots_u", &BlendComplex::knotsU)
@@ -247,7 +257,9 @@ void bindBlend(py::module_& m) {
                                bothDirections, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "at"_a = "end");
+      "ring"_a = py::none(), "both_directions"_a = true, "at"_a = "end",
+      "Section 4.2: a sphere zone joined to a free-form ring (none: the default ring) by a C2 transition row of "
+      "degree (6,5).");
   m.def(
       "blend_sphere_zone_naive",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
@@ -255,7 +267,8 @@ void bindBlend(py::module_& m) {
          const std::string& at) {
         return blendSphereZoneNaive(frameOf(o, x, y), radius, longitudes, latitudes, ringOf(ring), interfaceOf(at));
       },
-      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "ring"_a = py::none(), "at"_a = "end");
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "ring"_a = py::none(), "at"_a = "end",
+      "The naive baseline of Fig. 2a for a sphere zone: a (3,5) Hermite transition row without reparameterization.");
   m.def(
       "make_bspline_surface",
       [](const PointMatrix& poles, const Eigen::VectorXd& weights, const Eigen::VectorXd& knotsU,
@@ -288,7 +301,9 @@ void bindBlend(py::module_& m) {
                          bothDirections, naive, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end");
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end",
+      "Section 4.2 for a cone (a cylinder for slope 0) joined at its top height to a free-form ring; naive: the "
+      "Fig. 2a baseline.");
   m.def(
       "blend_torus",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
@@ -298,7 +313,8 @@ void bindBlend(py::module_& m) {
                           naive, interfaceOf(at));
       },
       "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end");
+      "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false, "at"_a = "end",
+      "Section 4.2 for a torus zone joined at its last v angle to a free-form ring; naive: the Fig. 2a baseline.");
   py::class_<ShapeOfRevolution>(m, "ShapeOfRevolution", "A basic shape of revolution for join_shapes.")
       .def(py::init([](const std::string& kind, const Eigen::Vector3d& o, const Eigen::Vector3d& x,
                        const Eigen::Vector3d& y, double size0, double size1, const Eigen::VectorXd& around,

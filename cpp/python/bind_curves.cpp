@@ -60,8 +60,11 @@ void bindCurves(py::module_& m) {
       [](PointsRef q, bool closed, const std::string& parametrization) {
         return quasiInterpolant(q, parseParametrization(parametrization), closed);
       },
-      "points"_a, "closed"_a = false, "parametrization"_a = "chordal");
-  m.def("control_point_spline", &controlPointSpline, "points"_a, "closed"_a = false);
+      "points"_a, "closed"_a = false, "parametrization"_a = "chordal",
+      "The cubic quasi-interpolant baseline: c_i := p_i, the blossom of f_i at (t_{i-1}, t_i, t_{i+1}); same knots "
+      "and ends as the csr-spline.");
+  m.def("control_point_spline", &controlPointSpline, "points"_a, "closed"_a = false,
+        "The 'data as control points' baseline: a cubic B-spline with uniform knots and the samples as its poles.");
   m.def(
       "classic_interpolation",
       [](PointsRef q, bool closed, const std::string& parametrization) {
@@ -73,8 +76,10 @@ void bindCurves(py::module_& m) {
   m.def("parameters", [](PointsRef q, const std::string& kind, bool closed) {
     validateSamples(q, closed, 2, "parametrization");
     return parameters(q, parseParametrization(kind), closed);
-  }, "points"_a, "parametrization"_a = "chordal", "closed"_a = false);
-  m.def("beta_from_knots", &betaFromKnots, "knots"_a);
+  }, "points"_a, "parametrization"_a = "chordal", "closed"_a = false,
+  "The samples' parameters: t_0 = 0, t_{i+1} - t_i = |q_{i+1} - q_i|^a (a = 1 chordal, 1/2 centripetal, 0 uniform).");
+  m.def("beta_from_knots", &betaFromKnots, "knots"_a,
+        "Eq. (1): beta_i = h_i / h_{i-1} for every knot with both neighbours.");
   m.def(
       "g2_from_de_boor",
       [](const PointMatrix& c, const Eigen::VectorXd& beta) {
@@ -101,7 +106,8 @@ void bindCurves(py::module_& m) {
         const Handle(Geom_BSplineCurve) c = toOcct(curve);
         return curvatureSignChanges(curvatureProfile(c, 0, minPerSpan), zeroTol);
       },
-      "curve"_a, "min_per_span"_a = 32, "zero_tol"_a = 1e-6);
+      "curve"_a, "min_per_span"_a = 32, "zero_tol"_a = 1e-6,
+      "Sign changes of the signed curvature along the curve (0 for a non-planar curve).");
   m.def(
       "curvature_extrema",
       [](const BSplineCurve& curve, int n, int minPerSpan) {
@@ -115,7 +121,8 @@ void bindCurves(py::module_& m) {
   m.def(
       "max_distance",
       [](const BSplineCurve& curve, PointsRef q) { return maxDistanceToPoints(toOcct(curve), q); },
-      "curve"_a, "points"_a);
+      "curve"_a, "points"_a,
+      "The largest distance from the points to the curve (by projection).");
   m.def(
       "edge_capsule",
       [](const BSplineCurve& curve) {

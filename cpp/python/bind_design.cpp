@@ -61,32 +61,39 @@ void bindDesign(py::module_& m) {
            }),
            "jet"_a, "s0"_a, "s1"_a);
 
-  m.def("line_segment", &lineSegment, "p0"_a, "p1"_a);
+  m.def("line_segment", &lineSegment, "p0"_a, "p1"_a,
+        "The line segment from p0 to p1 (degree 1, weights 1).");
   m.def(
       "ellipse_arc",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double b, double start,
          double sweep) { return ellipseArc(frameOf(o, x, y), a, b, start, sweep); },
-      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "start"_a, "sweep"_a);
+      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "start"_a, "sweep"_a,
+      "An ellipse arc x = a cos t, y = b sin t in the frame, t from start over sweep (rational quadratic).");
   m.def(
       "parabola_arc",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double focal, double t0,
          double t1) { return parabolaArc(frameOf(o, x, y), focal, t0, t1); },
-      "origin"_a, "x"_a, "y"_a, "focal"_a, "t0"_a, "t1"_a);
+      "origin"_a, "x"_a, "y"_a, "focal"_a, "t0"_a, "t1"_a,
+      "A parabola arc x = t^2 / (4 focal), y = t in the frame (OCCT's convention), t from t0 to t1.");
   m.def(
       "hyperbola_arc",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double b, double t0,
          double t1) { return hyperbolaArc(frameOf(o, x, y), a, b, t0, t1); },
-      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "t0"_a, "t1"_a);
+      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "t0"_a, "t1"_a,
+      "A hyperbola arc x = a cosh t, y = b sinh t in the frame, t from t0 to t1 (rational quadratic).");
   m.def(
       "archimedean_spiral",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double b,
          double theta0, double theta1) { return archimedeanSpiral(frameOf(o, x, y), a, b, theta0, theta1); },
-      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "theta0"_a, "theta1"_a);
+      "origin"_a, "x"_a, "y"_a, "a"_a, "b"_a, "theta0"_a, "theta1"_a,
+      "The Archimedean spiral r = a + b theta in the frame, theta from theta0 to theta1 (a parametric curve: "
+      "Section 5).");
   m.def(
       "circle_involute",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double r, double t0,
          double t1) { return circleInvolute(frameOf(o, x, y), r, t0, t1); },
-      "origin"_a, "x"_a, "y"_a, "r"_a, "t0"_a, "t1"_a);
+      "origin"_a, "x"_a, "y"_a, "r"_a, "t0"_a, "t1"_a,
+      "The involute r (cos t + t sin t, sin t - t cos t) of the circle of radius r in the frame, t from t0 to t1.");
 
   py::class_<PiecePolygon>(m, "PiecePolygon", "A basic piece's control polygon (Sections 5, 6).")
       .def_readonly("marks", &PiecePolygon::marks)
@@ -95,10 +102,15 @@ void bindDesign(py::module_& m) {
       .def_readonly("end", &PiecePolygon::end)
       .def_readonly("exact", &PiecePolygon::exact)
       .def_readonly("marks_added", &PiecePolygon::marksAdded);
-  m.def("complete_marks", &completeMarks, "marks"_a);
-  m.def("piece_polygon", &piecePolygon, "curve"_a, "marks"_a);
-  m.def("polygon_from_jets", &polygonFromJets, "f"_a, "df"_a, "d2f"_a, "marks"_a);
-  m.def("quintic_pieces", &quinticPieces, "curve"_a, "marks"_a);
+  m.def("complete_marks", &completeMarks, "marks"_a,
+        "The marks with 0 and 1 added: increasing values in [0, 1] that become knots of the design.");
+  m.def("piece_polygon", &piecePolygon, "curve"_a, "marks"_a,
+        "Sections 5, 6: the control polygon of a basic curve between its marks (exact for rational curves of degree "
+        "<= 3).");
+  m.def("polygon_from_jets", &polygonFromJets, "f"_a, "df"_a, "d2f"_a, "marks"_a,
+        "Section 5: the control polygon from the 2-jets (points, first and second derivatives) at the marks.");
+  m.def("quintic_pieces", &quinticPieces, "curve"_a, "marks"_a,
+        "The curve's quintic Bézier pieces between its marks (6 rows each).");
   m.def(
       "merge_pieces",
       [](const std::vector<PiecePolygon>& pieces, double joinTolerance) {
@@ -121,15 +133,19 @@ void bindDesign(py::module_& m) {
       .def_readonly("knots_v", &BSplineSurface::knotsV)
       .def_readonly("mults_u", &BSplineSurface::multsU)
       .def_readonly("mults_v", &BSplineSurface::multsV);
-  m.def("tensor_control_net", &tensorControlNet, "bezier"_a, "n_i"_a, "n_j"_a, "beta_u"_a, "beta_v"_a);
-  m.def("revolve", &revolve, "profile"_a, "axis_point"_a, "axis_direction"_a);
+  m.def("tensor_control_net", &tensorControlNet, "bezier"_a, "n_i"_a, "n_j"_a, "beta_u"_a, "beta_v"_a,
+        "Eq. (11): the bicubic control points c_ij from the patches' interior Bézier points and the scalars beta_u, "
+        "beta_v.");
+  m.def("revolve", &revolve, "profile"_a, "axis_point"_a, "axis_direction"_a,
+        "The exact surface of revolution of a profile curve about an axis (the rational quadratic circle in v).");
   m.def(
       "face_capsule",
       [](const BSplineSurface& surface) {
         return py::reinterpret_steal<py::object>(newShapeCapsule(
             new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face())));
       },
-      "surface"_a);
+      "surface"_a,
+      "A capsule owning a new TopoDS_Face of the surface, for occ_bridge.adopt_shape (kernel.adopt).");
 }
 
 }  // namespace fairsplines::python

@@ -97,7 +97,9 @@ void bindMonotone(py::module_& m) {
         return py::dict("admissible"_a = e.admissible, "straight"_a = e.straight, "reversed"_a = e.reversed,
                         "a"_a = e.a, "b"_a = e.b, "turn"_a = e.turn, "reason"_a = e.reason);
       },
-      "p0"_a, "t0"_a, "p1"_a, "t1"_a);
+      "p0"_a, "t0"_a, "p1"_a, "t1"_a,
+      "Classifies the G2 Hermite data (p0, t0, p1, t1) for Algorithm 2: admissible, straight, reversed, a, b, turn "
+      "and the reason.");
 
   m.def(
       "monotone_spline",

@@ -8,10 +8,10 @@
 
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/csr.hpp"
-#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/occt.hpp"
 #include "fairsplines/parameters.hpp"
+#include "csr_detail.hpp"
 #include "test_support.hpp"
 
 using namespace fairsplines;

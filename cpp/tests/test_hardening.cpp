@@ -371,3 +371,15 @@ TEST(Hardening, EndsRefusedByVogtsTheoremSearchNoClothoidSpline) {  // fallback_
   EXPECT_NEAR(b.kappa0, 0.25, 1e-9);
   EXPECT_NEAR(b.kappa1, 1.0, 1e-9);
 }
+
+TEST(Hardening, ConeOfRadiusDblMaxIsRefused) {  // cone_radius0_dblmax_pole_inf (the long run on the fixed kernel)
+  ShapeFrame frame;
+  expectRefused([&] { cone(frame, 1.7976931348623157e308, 1.8314097676431909e-314, vec({4.47998046875, 8.449951171875}),
+                           vec({0, 6.103515625e-05})); },
+                "the cone's radius reaches");
+  // Within DBL_MAX / 64 every pole is finite.
+  const G2Surface ok = cone(frame, 1e300, 0.5, vec({0.0, 2.0, 4.0, 6.283185307179586}), vec({0, 1, 2}));
+  for (int I = 0; I < ok.nu; ++I) {
+    for (int J = 0; J < ok.nv; ++J) EXPECT_NO_THROW(patchToOcct(ok, I, J));
+  }
+}

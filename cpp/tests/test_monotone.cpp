@@ -16,8 +16,8 @@
 #include <random>
 
 #include "fairsplines/monotone.hpp"
-#include "fairsplines/monotone_detail.hpp"
 #include "fairsplines/occt.hpp"
+#include "monotone_detail.hpp"
 #include "test_support.hpp"
 
 using namespace fairsplines;

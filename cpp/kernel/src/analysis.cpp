@@ -1,11 +1,11 @@
 #include "fairsplines/analysis.hpp"
 
-#include "fairsplines/finite.hpp"
-
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "finite.hpp"
 
 namespace fairsplines {
 

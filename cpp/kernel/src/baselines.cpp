@@ -6,10 +6,10 @@
 #include <TColgp_HArray1OfPnt.hxx>
 
 #include "fairsplines/bspline.hpp"
-#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
 #include "fairsplines/occt.hpp"
+#include "csr_detail.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

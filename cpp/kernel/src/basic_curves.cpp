@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "bernstein.hpp"
 
 namespace fairsplines {
 
@@ -162,7 +163,7 @@ RationalBezierCurve::RationalBezierCurve(HomogeneousBezier homogeneous, const ch
 void RationalBezierCurve::jets(double u, Eigen::Vector4d& f, Eigen::Vector4d& df, Eigen::Vector4d& d2f) const {
   // de Casteljau down to degree 2 (for the second derivative), then 1, then the point.
   const int n = static_cast<int>(h_.rows()) - 1;
-  Eigen::Matrix<double, 4, 4> b;  // columns: control points
+  Eigen::Matrix<double, 4, 4> b = Eigen::Matrix<double, 4, 4>::Zero();  // columns: control points (n + 1 used)
   for (int j = 0; j <= n; ++j) b.col(j) = h_.row(j).transpose();
   const double s = 1.0 - u;
   d2f.setZero();
@@ -196,19 +197,7 @@ Eigen::Vector3d RationalBezierCurve::d2(double u) const {
 }
 
 std::optional<HomogeneousBezier> RationalBezierCurve::homogeneousCubic() const {
-  HomogeneousBezier b = h_;
-  while (b.rows() < 4) {  // degree elevation
-    const int n = static_cast<int>(b.rows()) - 1;
-    HomogeneousBezier raised(n + 2, 4);
-    raised.row(0) = b.row(0);
-    raised.row(n + 1) = b.row(n);
-    for (int i = 1; i <= n; ++i) {
-      const double a = static_cast<double>(i) / (n + 1);
-      raised.row(i) = a * b.row(i - 1) + (1.0 - a) * b.row(i);
-    }
-    b = raised;
-  }
-  return b;
+  return bernstein::raise(h_, 3);  // degree elevation
 }
 
 std::unique_ptr<RationalBezierCurve> lineSegment(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1) {

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "fairsplines/blend_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/g1_to_c1.hpp"
+#include "blend_detail.hpp"
 
 namespace fairsplines {
 
@@ -256,12 +256,7 @@ G1RevolvedShape g1Cone(const ShapeFrame& frame, double radius0, double slope, co
   }
   s.profileIsLine = true;
   s.profileKnots = heights.array() - heights[0];
-  s.end << radius0 + slope * heights[m], heights[m];
-  s.tangent = Eigen::Vector2d(slope, 1.0).normalized();
-  s.size = heights[m] - heights[m - 1];
-  s.start << radius0 + slope * heights[0], heights[0];
-  s.startTangent = -s.tangent;
-  s.startSize = heights[1] - heights[0];
+  detail::setLineEnds(s, radius0, slope, heights);
   return s;
 }
 

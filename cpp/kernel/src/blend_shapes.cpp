@@ -1,6 +1,6 @@
 #include "fairsplines/blend_shapes.hpp"
 
-#include "fairsplines/blend_detail.hpp"
+#include "blend_detail.hpp"
 
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 
@@ -236,6 +236,14 @@ G2Surface cylinder(const ShapeFrame& frame, double radius, const Eigen::VectorXd
 G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
                const Eigen::VectorXd& heights) {
   if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
+  // As for the sphere: the patches' affine poles reach a few radii out; the largest radius
+  // over the heights must stay below DBL_MAX / 64 (a fuzz finding: radius0 = DBL_MAX).
+  double reach = std::abs(radius0);
+  for (Eigen::Index j = 0; j < heights.size(); ++j) reach = std::max(reach, std::abs(radius0 + slope * heights[j]));
+  if (!(reach < std::numeric_limits<double>::max() / 64.0)) {
+    throw InputError("the cone's radius reaches " + exactNumber(reach) + " over its heights: too large, its points "
+                     "would overflow");
+  }
   const G2CircleSpline c = g2Circle(angles);
   Homogeneous3 profile;
   Eigen::VectorXd beta, gamma;
@@ -256,31 +264,48 @@ G2Surface torus(const ShapeFrame& frame, double R, double r, const Eigen::Vector
   return revolveG2(frame, profile, cv.beta, cv.gamma, cv.closed, cu);
 }
 
-Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J) {
-  if (I < 0 || I >= surface.nu || J < 0 || J >= surface.nv) throw InputError("patch index out of range");
-  TColgp_Array2OfPnt poles(1, 4, 1, 4);
-  TColStd_Array2OfReal weights(1, 4, 1, 4);
-  for (int r = 0; r < 4; ++r) {
-    for (int s = 0; s < 4; ++s) {
-      const auto h = surface.point(I, J, r, s);
-      requireFinite(h, "the patch (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ") of the shape",
-                    "homogeneous control points");
+namespace detail {
+
+Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int degreeU, int degreeV,
+                                              const std::string& what) {
+  const int nu = degreeU + 1, nv = degreeV + 1;
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  TColStd_Array2OfReal weights(1, nu, 1, nv);
+  for (int a = 0; a < nu; ++a) {
+    for (int b = 0; b < nv; ++b) {
+      const auto h = bezier.row(a * nv + b);
+      requireFinite(h, what, "homogeneous control points");
       if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
-      poles.SetValue(r + 1, s + 1, gp_Pnt(h[0] / h[3], h[1] / h[3], h[2] / h[3]));
-      weights.SetValue(r + 1, s + 1, h[3]);
+      const gp_Pnt pole(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
+      if (!std::isfinite(pole.X()) || !std::isfinite(pole.Y()) || !std::isfinite(pole.Z())) {
+        throw InputError(what + ": its poles are not finite (a small weight divides a large homogeneous point): "
+                                "the input is too large for double precision");
+      }
+      poles.SetValue(a + 1, b + 1, pole);
+      weights.SetValue(a + 1, b + 1, h[3]);
     }
   }
   TColStd_Array1OfReal knots(1, 2);
   knots.SetValue(1, 0.0);
   knots.SetValue(2, 1.0);
-  TColStd_Array1OfInteger mults(1, 2);
-  mults.SetValue(1, 4);
-  mults.SetValue(2, 4);
+  TColStd_Array1OfInteger multsU(1, 2), multsV(1, 2);
+  multsU.Init(nu);
+  multsV.Init(nv);
   try {
-    return new Geom_BSplineSurface(poles, weights, knots, knots, mults, mults, 3, 3);
+    return new Geom_BSplineSurface(poles, weights, knots, knots, multsU, multsV, degreeU, degreeV);
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("OpenCASCADE rejected the patch: ") + failure.GetMessageString());
   }
+}
+
+}  // namespace detail
+
+Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J) {
+  if (I < 0 || I >= surface.nu || J < 0 || J >= surface.nv) throw InputError("patch index out of range");
+  // Row 4 r + s of the patch's 16 rows is b_rs: degree (3, 3) in the layout of bezierPatchToOcct.
+  return detail::bezierPatchToOcct(surface.bezier.middleRows((I * surface.nv + J) * 16, 16), 3, 3,
+                                   "the patch (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) +
+                                       ") of the shape");
 }
 
 }  // namespace fairsplines

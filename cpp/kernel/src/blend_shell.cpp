@@ -26,6 +26,7 @@
 
 #include "fairsplines/blend_surface.hpp"
 #include "fairsplines/errors.hpp"
+#include "bernstein.hpp"
 
 namespace fairsplines {
 
@@ -53,16 +54,10 @@ Homogeneous4 sidePoints(const TaggedPatch& p, Side side) {
 
 /// The side's points at t = s / kSamples (de Casteljau on the homogeneous points, projected).
 std::vector<Eigen::Vector3d> sampled(const Homogeneous4& h) {
-  const Eigen::Index n = h.rows();
   std::vector<Eigen::Vector3d> out(kSamples + 1);
-  std::vector<Eigen::Vector4d> work(static_cast<size_t>(n));
   for (int s = 0; s <= kSamples; ++s) {
-    const double t = static_cast<double>(s) / kSamples;
-    for (Eigen::Index k = 0; k < n; ++k) work[k] = h.row(k).transpose();
-    for (Eigen::Index r = n - 1; r > 0; --r) {
-      for (Eigen::Index k = 0; k < r; ++k) work[k] = (1 - t) * work[k] + t * work[k + 1];
-    }
-    out[s] = work[0].head<3>() / work[0][3];
+    const Eigen::RowVector4d p = bernstein::value(h, static_cast<double>(s) / kSamples);
+    out[s] = p.head<3>().transpose() / p[3];
   }
   return out;
 }

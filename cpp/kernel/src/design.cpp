@@ -1,7 +1,7 @@
 // Design with basic curves, Sections 5 and 6 and Fig. 9 of Karčiauskas & Peters,
 // "Curvature-sensitive splines and design with basic curves".
 #include "fairsplines/design.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 #include <algorithm>
 #include <cmath>

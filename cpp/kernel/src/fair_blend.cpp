@@ -16,12 +16,12 @@
 #include <utility>
 #include <vector>
 
+#include "fairsplines/errors.hpp"
+#include "fairsplines/occt.hpp"
 #include "clothoid.hpp"
+#include "finite.hpp"
 #include "spiral.hpp"
 #include "work_budget.hpp"
-#include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
-#include "fairsplines/occt.hpp"
 
 namespace fairsplines {
 namespace {

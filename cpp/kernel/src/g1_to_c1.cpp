@@ -3,8 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "fairsplines/finite.hpp"
 #include "fairsplines/errors.hpp"
+#include "bernstein.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 
@@ -39,20 +40,9 @@ std::array<Reparam2, 2> etaSplit(double a0, double a1) {
 }
 
 PointMatrix composeQuadratic2(const PointMatrix& q, const Reparam2& eta) {
-  // Bernstein products of degree 2 x 2 -> 4: (low - bar)^2, 2 (low - bar) bar, bar^2.
-  const Eigen::Vector3d bar = eta.col(0), low = eta.col(1), diff = low - bar;
-  auto product = [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    Eigen::Matrix<double, 5, 1> c = Eigen::Matrix<double, 5, 1>::Zero();
-    const double binom2[3] = {1, 2, 1}, binom4[5] = {1, 4, 6, 4, 1};
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) c[i + j] += binom2[i] * binom2[j] / binom4[i + j] * a[i] * b[j];
-    }
-    return c;
-  };
-  const Eigen::Matrix<double, 5, 1> basis[3] = {product(diff, diff), 2 * product(diff, bar), product(bar, bar)};
-  PointMatrix out = PointMatrix::Zero(5, q.cols());
-  for (int k = 0; k < 3; ++k) out += basis[k] * q.row(k);
-  return out;
+  // Eq. (9) with a quadratic map: Bernstein products of degree 2 x 2 -> 4, (low - bar)^2,
+  // 2 (low - bar) bar, bar^2.
+  return bernstein::composeQuadratic(q, eta.col(0), eta.col(1));
 }
 
 C1QuarticSpline g1ToC1(const PointMatrix& quadratics, const Eigen::VectorXd& beta, const Eigen::VectorXd& betaT,

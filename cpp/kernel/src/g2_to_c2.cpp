@@ -4,8 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "fairsplines/finite.hpp"
 #include "fairsplines/errors.hpp"
+#include "bernstein.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 
@@ -27,22 +28,6 @@ Reparam subdivide(const Reparam& c, double a, double b) {
   out.row(2) = blossom(a, b, b);
   out.row(3) = blossom(b, b, b);
   return out;
-}
-
-double binomial(int n, int k) {
-  double r = 1;
-  for (int j = 1; j <= k; ++j) r = r * (n - k + j) / j;
-  return r;
-}
-
-/// Bézier coefficients of a product of two polynomials in Bernstein form (degrees m, n).
-Eigen::VectorXd bernsteinProduct(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-  const int m = static_cast<int>(a.size()) - 1, n = static_cast<int>(b.size()) - 1;
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(m + n + 1);
-  for (int i = 0; i <= m; ++i) {
-    for (int j = 0; j <= n; ++j) c[i + j] += binomial(m, i) * binomial(n, j) / binomial(m + n, i + j) * a[i] * b[j];
-  }
-  return c;
 }
 
 /// Throws InputError unless r = rbar / rlow has a positive denominator and increases on [0, 1]
@@ -294,12 +279,7 @@ std::vector<Reparam> sigmaMaps(const G2CircleSpline& circle, const Eigen::Vector
 
 PointMatrix composeQuadratic(const PointMatrix& quadratic, const Reparam& r) {
   // Eq. (9): sum_k q_k binom(2,k) (rlow - rbar)^{2-k} rbar^k, in Bernstein form of degree 6.
-  const Eigen::VectorXd rbar = r.col(0), rlow = r.col(1), diff = rlow - rbar;
-  const Eigen::VectorXd basis[3] = {bernsteinProduct(diff, diff), 2 * bernsteinProduct(diff, rbar),
-                                    bernsteinProduct(rbar, rbar)};
-  PointMatrix out = PointMatrix::Zero(7, quadratic.cols());
-  for (int k = 0; k < 3; ++k) out += basis[k] * quadratic.row(k);
-  return out;
+  return bernstein::composeQuadratic(quadratic, r.col(0), r.col(1));
 }
 
 PointMatrix hermiteQuadratic(const PointMatrix& cubic, double t0) {
@@ -350,12 +330,7 @@ Eigen::VectorXd C2SexticSpline::knots() const {
   return t;
 }
 
-PointMatrix raiseCubicToSextic(const PointMatrix& cubic) {
-  Eigen::VectorXd one = Eigen::VectorXd::Ones(4);  // (1)^3 in cubic Bernstein form
-  PointMatrix out = PointMatrix::Zero(7, cubic.cols());
-  for (int j = 0; j < cubic.cols(); ++j) out.col(j) = bernsteinProduct(cubic.col(j), one);
-  return out;
-}
+PointMatrix raiseCubicToSextic(const PointMatrix& cubic) { return bernstein::raise(cubic, 6); }
 
 C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vector<Reparam>>& maps,
                       const Eigen::VectorXd& betaT, bool closed) {

@@ -11,9 +11,9 @@
 #include <sstream>
 #include <vector>
 
-#include "fairsplines/csr_detail.hpp"
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "csr_detail.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

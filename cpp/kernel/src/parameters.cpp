@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
-#include "fairsplines/vectorise.hpp"
+#include "vectorise.hpp"
 
 namespace fairsplines {
 

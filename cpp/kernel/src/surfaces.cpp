@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 

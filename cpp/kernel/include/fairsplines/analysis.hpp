@@ -11,13 +11,16 @@
 namespace fairsplines {
 
 /// Curvature from first and second derivative in 3D: |C' x C''| / |C'|^3.
+/// Throws nothing: d1 = 0 gives NaN (0/0) or infinity.
 double curvature3D(const gp_Vec& d1, const gp_Vec& d2);
 
 /// Signed curvature of a planar curve with unit plane normal n: (C' x C'') . n / |C'|^3.
+/// Throws nothing: d1 = 0 gives NaN (0/0) or infinity.
 double signedCurvature(const gp_Vec& d1, const gp_Vec& d2, const gp_Vec& n);
 
 /// Unit normal of the plane holding all poles, oriented with a non-negative z (then y,
 /// then x) component; empty when the poles do not lie in one plane (relative tolerance).
+/// Throws nothing; the curve must not be null (not checked).
 std::optional<gp_Vec> planeNormal(const Handle(Geom_BSplineCurve)& curve, double relTol = 1e-9);
 
 struct CurvatureProfile {
@@ -30,11 +33,13 @@ struct CurvatureProfile {
 
 /// Curvature at n parameters spread over the curve: every knot span gets samples in
 /// proportion to its parameter length and at least `minPerSpan`, span ends included.
+/// Throws nothing; the curve must not be null and n, minPerSpan should be >= 1 (not checked).
 CurvatureProfile curvatureProfile(const Handle(Geom_BSplineCurve)& curve, int n, int minPerSpan = 8);
 
 /// Sign changes of the signed curvature along the profile; samples with
 /// |kappa| <= zeroTol * max|kappa| (or numerically zero for the curve's size) are skipped.
 /// A non-planar curve has unsigned curvature: 0.
+/// Throws nothing.
 int curvatureSignChanges(const CurvatureProfile& profile, double zeroTol = 1e-6);
 
 struct CurvatureExtremum {
@@ -44,10 +49,12 @@ struct CurvatureExtremum {
 
 /// Interior local extrema of kappa along the profile, refined by a parabola through
 /// the three samples around each one.
+/// Throws nothing (fewer than 3 samples: no extrema).
 std::vector<CurvatureExtremum> curvatureExtrema(const CurvatureProfile& profile);
 
 /// Largest distance from the points to the curve (rows of q, 2 or 3 columns),
 /// by projection (sampling followed by Newton refinement).
+/// Throws nothing; the curve must not be null and the points finite (not checked).
 double maxDistanceToPoints(const Handle(Geom_BSplineCurve)& curve, PointsRef q);
 
 }  // namespace fairsplines

@@ -27,6 +27,8 @@ struct Frame {
 class BasicCurve {
 public:
   virtual ~BasicCurve() = default;
+  /// value, d1, d2 (and homogeneousCubic, size) throw nothing: the constructors and factories
+  /// below refuse every curve they could not evaluate.
   virtual Eigen::Vector3d value(double u) const = 0;
   virtual Eigen::Vector3d d1(double u) const = 0;
   virtual Eigen::Vector3d d2(double u) const = 0;
@@ -98,6 +100,7 @@ std::unique_ptr<RationalBezierCurve> hyperbolaArc(const Frame& frame, double a, 
 class ParametricCurve : public BasicCurve {
 public:
   using Jet = std::function<void(double s, Eigen::Vector3d& f, Eigen::Vector3d& df, Eigen::Vector3d& d2f)>;
+  /// Throws InputError unless s0 < s1, both finite, and s1 - s0 is finite.
   ParametricCurve(Jet jet, double s0, double s1);
   Eigen::Vector3d value(double u) const override;
   Eigen::Vector3d d1(double u) const override;

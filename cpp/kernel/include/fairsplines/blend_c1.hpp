@@ -34,6 +34,7 @@ struct G1RevolvedShape {
   int piecesU() const { return static_cast<int>(circle.rows() / 3); }
   int piecesV() const { return static_cast<int>(profile.size()); }
   /// The biquadratic patch of arc i and profile piece j (role Basic, degree (2,2)).
+  /// Throws InputError ("no such patch") unless 0 <= i < piecesU() and 0 <= j < piecesV().
   TaggedPatch patch(int i, int j) const;
 };
 
@@ -53,6 +54,7 @@ G1RevolvedShape g1Torus(const ShapeFrame& frame, double R, double r, const Eigen
 
 /// The same shape with its profile run backwards (pieces, Bézier rows, scalars and knots
 /// mirrored), so that its start becomes the end where blendC1 joins (a dome's bottom).
+/// Throws nothing.
 G1RevolvedShape reversedProfile(const G1RevolvedShape& shape);
 
 /// Choices of the Section 5 construction.
@@ -104,6 +106,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
                      const C1BlendOptions& options = C1BlendOptions());
 
 /// The G1 biquadratic form of a shape of revolution described for the joins.
+/// Throws the InputError of g1SphereZone, g1Cone or g1Torus for the shape's kind.
 G1RevolvedShape g1Shape(const ShapeOfRevolution& shape);
 
 /// Section 5 for basic shape to basic shape (the C1 counterpart of joinShapes): the end of

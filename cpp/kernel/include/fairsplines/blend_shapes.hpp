@@ -32,6 +32,7 @@ struct G2CircleSpline {
   int pieces() const { return static_cast<int>(alpha.size()); }
   /// The rational quadratic (conic) of piece i, 3 homogeneous rows (weights 1, cos(alpha_i/2), 1);
   /// piece i is its exact degree raise.
+  /// Throws nothing; i must be a piece (0 <= i < pieces(), not checked).
   Homogeneous3 quadratic(int i) const;
 };
 
@@ -43,6 +44,7 @@ G2CircleSpline g2Circle(const Eigen::VectorXd& theta);
 
 /// Eqs. (3)-(4): beta_i = sin(alpha_i/2) / sin(alpha_{i-1}/2),
 /// gamma_i = 2 beta_i (tan(alpha_{i-1}/4) + tan(alpha_i/4)) sin(alpha_i/2).
+/// Throws nothing; expects openings 0 < alpha < 4 pi / 3 (as g2Circle checks).
 void circleScalars(double alphaPrev, double alpha, double& beta, double& gamma);
 
 /// Orthonormal frame of a shape: origin and axes; z is the axis of revolution.
@@ -78,6 +80,9 @@ struct G2Surface {
 /// distance from the axis and height) about frame.z, with the circle partition in u. The
 /// tensor form of docs/READINGS.md: b_rs = (rho_s x_r, rho_s y_r, zeta_s w_r, omega_s w_r) in the
 /// frame. `profileBeta`/`profileGamma` follow the layout of G2Surface::betaV.
+/// Throws InputError for a frame ShapeFrame::check refuses, a profile that is not 4 rows per
+/// piece (at least one piece), profileBeta or profileGamma not one per piece, a profile weight
+/// that is not positive, or a surface whose points are not finite.
 G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const Eigen::VectorXd& profileBeta,
                     const Eigen::VectorXd& profileGamma, bool profileClosed, const G2CircleSpline& circle);
 
@@ -87,6 +92,8 @@ G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const 
 G2Surface sphereZone(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                      const Eigen::VectorXd& latitudes);
 /// Circular cylinder of the given radius, angles in u and increasing heights z_j in v.
+/// Throws InputError for a radius that is not positive and finite, and as cone does (heights,
+/// angles, frame).
 G2Surface cylinder(const ShapeFrame& frame, double radius, const Eigen::VectorXd& angles,
                    const Eigen::VectorXd& heights);
 /// Cone with radius r(z) = radius0 + slope z at height z (frame coordinates), heights in v.

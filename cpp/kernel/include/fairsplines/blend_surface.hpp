@@ -63,6 +63,8 @@ Handle(Geom_BSplineSurface) defaultSphereRing(const ShapeFrame& frame, double ra
 
 /// Arc-level knots of the C2 conversion of a circle with scalars betaT: u_0 = 0, intervals
 /// with ratio betaT (the knots of C2SexticSpline::knots() at the arcs' first pieces).
+/// Throws nothing; c2 must come from circleToC2 (firstPiece has one entry per arc and one
+/// more).
 Eigen::VectorXd arcKnots(const C2SexticSpline& c2);
 
 /// Section 4.2 for a sphere zone over a full turn of longitudes (closed in u), joined at its
@@ -88,6 +90,10 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
 /// full turn, increasing heights; the interface is the top height. naive: the Fig. 2a
 /// baseline instead (method and sexticInV unused). Ring rules as blendSphereZone; the
 /// default ring continues along the cone's generator.
+/// Throws InputError for a non-finite radius0 or slope, heights detail::checkHeights refuses
+/// (fewer than two, not finite, not increasing, or a radius that is not positive at one),
+/// angles g2Circle refuses, an interface on the axis, or a ring whose structure does not match
+/// the interface.
 BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
                        const Eigen::VectorXd& heights, CircleReparam method = CircleReparam::Rho,
                        Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false,
@@ -102,9 +108,11 @@ BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen
                        Interface at = Interface::End);
 
 /// The u knots (one period) a free-form ring must have: arcKnots of the C2 circle.
+/// Throws the InputError of g2Circle and circleToC2 for the longitudes.
 Eigen::VectorXd ringKnots(const Eigen::VectorXd& longitudes, CircleReparam method = CircleReparam::Rho);
 
 /// Degree raise of a homogeneous Bézier patch to (du, dv) (not below its degrees).
+/// Throws nothing; the patch must have (degreeU + 1) (degreeV + 1) rows (not checked).
 TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv);
 
 /// The complex as one Geom_BSplineSurface: every patch raised to the largest degrees
@@ -119,6 +127,9 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
 /// The naive baseline of Fig. 2a: the G2 bicubic sphere patches as they are, the ring, and a
 /// transition row of degree (3,5) that Hermite-interpolates both 2-jets without
 /// reparameterization (u-intervals: the arcs). Same ring rules as blendSphereZone.
+/// Throws InputError as blendSphereZone for the sphere (radius, latitudes, an interface at a
+/// pole), for longitudes g2Circle refuses, or for a ring that does not match the arc knots
+/// exactly ("the free-form net does not match the interface: ...").
 BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                                   const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring = nullptr,
                                   Interface at = Interface::End);

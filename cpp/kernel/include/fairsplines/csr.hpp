@@ -34,14 +34,23 @@ struct CsrOptions {
 /// q_{n-1}; its end poles are the blossoms F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1
 /// (mirrored at the other end). It is C2 throughout, reproduces quadratic data exactly
 /// and adds no turn at the ends that f_1 / f_{n-2} do not have.
-/// Closed data give a periodic curve. Needs at least 3 samples.
+/// Closed data give a periodic curve.
+/// Throws InputError for samples validateSamples refuses (fewer than 3 rows, not 2 or 3
+/// columns, a coordinate that is not finite, all points coincident, two consecutive points
+/// (cyclically, when closed) coincident), an epsilon that is not positive and finite, given
+/// parameters that are not n (n + 1 closed) finite, strictly increasing values or span more
+/// than double precision holds, or a curve whose poles or knots are not finite
+/// (requireValidCurve).
 BSplineCurve csrSpline(PointsRef q, const CsrOptions& options = {});
 
 /// Quadratic design of eq. (12): sparse samples to the quadratic Bézier pieces
 /// {q_i, m_i, q_{i+1}} with shape handles m_i = mu_{i+1} m_i^L + (1 - mu_{i+1}) m_i^R.
 /// Returned as a degree-2 B-spline with double interior knots at t_i (poles q_0, m_0,
 /// q_1, m_1, ..., q_{n-1}); at the ends of open data the one available handle is used.
-/// Needs at least 3 samples.
+/// Throws InputError for samples validateSamples refuses (fewer than 3 rows, not 2 or 3
+/// columns, a coordinate that is not finite, all points coincident, two consecutive points
+/// (cyclically, when closed) coincident), an epsilon that is not positive and finite, or a
+/// curve that is not finite.
 BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization = Parametrization::Chordal,
                              bool closed = false, double epsilon = 1e-9);
 

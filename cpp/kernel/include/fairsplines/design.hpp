@@ -25,6 +25,8 @@ struct PiecePolygon {
 
 /// Checks marks given by a designer: finite, inside [0, 1], strictly increasing. Marks
 /// at 0 or 1 (within 1e-12) are the ends and are dropped. Returns u_0 = 0, marks, u_m = 1.
+/// Throws InputError for a mark that is not finite, outside [0, 1], not increasing, or too
+/// close to its neighbour to be a knot (requireSeparateKnots).
 Eigen::VectorXd completeMarks(const Eigen::VectorXd& marks);
 
 /// Section 6: the exact rational C2 cubic of a homogeneous cubic with marks. Eq. (9):
@@ -32,6 +34,8 @@ Eigen::VectorXd completeMarks(const Eigen::VectorXd& marks);
 /// F[0,0,0], F[0,0,u_1] (mirrored at u = 1). Where a control weight would not be
 /// positive (circle arcs of large sweep), marks are added at the middle of the widest
 /// interval next to it until every weight is positive ("split just enough").
+/// Throws InputError unless the cubic has 4 rows, for marks completeMarks refuses, or when 64
+/// added marks cannot make every weight positive.
 PiecePolygon exactPolygon(const HomogeneousBezier& cubic, const Eigen::VectorXd& marks);
 
 /// Section 5 from the 2-jets of a curve at u_0..u_m (rows of f, df, d2f: derivatives in
@@ -39,13 +43,18 @@ PiecePolygon exactPolygon(const HomogeneousBezier& cubic, const Eigen::VectorXd&
 /// quintic of eq. (7) is formed with h f', h^2 f'' (h = u_{i+1} - u_i), its 2-jet is
 /// converted to degree 3 by eq. (8), and c_i follows from eq. (3). The ends use the
 /// cubic 2-jets at u_0 and u_m (which is eq. (10) for those jets).
+/// Throws InputError unless the 2-jets are given at every mark (ends included) with 3 (or 4,
+/// homogeneous) coordinates, for jets that are not finite, or a curve that does not move.
 PiecePolygon polygonFromJets(const PointMatrix& f, const PointMatrix& df, const PointMatrix& d2f,
                              const Eigen::VectorXd& marks);
 
 /// Section 6 for rational curves of degree <= 3, Section 5 for the others.
+/// Throws InputError as completeMarks, exactPolygon or polygonFromJets, or for jets or a
+/// polygon that are not finite.
 PiecePolygon piecePolygon(const BasicCurve& curve, const Eigen::VectorXd& marks);
 
 /// The quintic pieces of eq. (7) over the segments of `marks` (6 rows per segment).
+/// Throws InputError as piecePolygon, or for Bézier points that are not finite.
 PointMatrix quinticPieces(const BasicCurve& curve, const Eigen::VectorXd& marks);
 
 enum class JoinKind {

@@ -23,6 +23,8 @@ public:
 // --- Derivative control polygons, eqs. (3) and (5) ----------------------------------------
 
 /// The knot vector with every knot repeated by its multiplicity (t_0 .. t_{n+p+1}).
+/// Throws InputError for a periodic curve, a multiplicity count that is not one per knot, or
+/// multiplicities that do not add up to the number of poles + degree + 1.
 Eigen::VectorXd flatKnots(const BSplineCurve& curve);
 
 struct DerivativePolygons {
@@ -57,9 +59,11 @@ struct SegmentCheck {
 /// coordinates) and local knots u[0..5] = t_{j-2}..t_{j+3}. Inequalities hold up to `tol`
 /// relative to the segment's largest derivative control point. No allocation: the grid search
 /// calls it.
+/// Throws nothing; the points and knots must be finite (checkSegments validates a curve first).
 SegmentCheck checkSegment(const Eigen::Vector2d c[4], const double u[6], double tol = 1e-12);
 
 /// One sentence: which condition fails and by how much, or that Theorem 1 holds.
+/// Throws nothing.
 std::string describe(const SegmentCheck& check);
 
 struct SegmentReport {
@@ -197,6 +201,8 @@ MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, doub
 
 /// Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds (Gauss quadrature, 16 points
 /// per span): 0 for lines and circles. A fairness measure used to compare solvers.
+/// Throws InputError for a curve planarCurve refuses (not a valid B-spline, or a 3D curve whose
+/// poles do not lie in one plane), or a variation that is not finite.
 double curvatureVariation(const BSplineCurve& curve);
 
 }  // namespace fairsplines

@@ -18,10 +18,12 @@ Handle(Geom_BSplineCurve) toOcct(const BSplineCurve& curve);
 Handle(Geom_BSplineCurve) csrSplineOcct(PointsRef q, const CsrOptions& options = {});
 
 /// Exact conversion back; always 3 columns.
+/// Throws nothing; the handle must not be null (not checked).
 BSplineCurve fromOcct(const Handle(Geom_BSplineCurve)& curve);
 
 /// The curve as the text of a BRep edge (BRepTools format), every real with 17
 /// significant digits so that reading it back is exact.
+/// Throws nothing; the handle must not be null (not checked).
 std::string toBrepString(const Handle(Geom_BSplineCurve)& curve);
 
 }  // namespace fairsplines

@@ -23,9 +23,11 @@ SampleInfo validateSamples(PointsRef q, bool closed, int minPoints, const char* 
 
 /// Parameters from chord lengths: t_0 = 0 and t_{i+1} - t_i = chord_i^a with a = 1
 /// (chordal), 1/2 (centripetal) or 0 (uniform). Size: one more than the chords.
+/// Throws nothing; the chords must be finite and positive (validateSamples ensures it).
 Eigen::VectorXd parameters(const Eigen::VectorXd& chords, Parametrization kind);
 
 /// Parameters for samples (n values, n + 1 for closed data: t_n closes the loop).
+/// Throws nothing; q must be samples validateSamples accepts (not checked here).
 Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed);
 
 /// Checks user-given parameters: n values (n + 1 when closed), finite, strictly
@@ -36,9 +38,11 @@ namespace detail {
 
 /// validateSamples writing the chords to `chords` (room for one per segment: n - 1, or n
 /// when closed) instead of a new vector. Returns the bounding-box diagonal.
+/// Throws InputError as validateSamples.
 double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
 
 /// parameters() into t (count + 1 values); chords may be t + 1 (computed in place).
+/// Throws nothing, as parameters().
 void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t);
 
 /// The checks of validateSamplesInto for open data in two parts, so that a pass can

@@ -24,6 +24,8 @@ struct BSplineSurface {
 /// scalars betaU_i, betaV_j (sizes nI + 1 and nJ + 1: index i, j). `bezier` holds the
 /// patches' 4 x 4 points: row ((I * nJ + J) * 16 + 4 r + s) is b_rs of patch (I, J).
 /// Returns nI * nJ rows (row (i-1) * nJ + (j-1)). Works coordinate-wise (3 or 4 columns).
+/// Throws InputError unless bezier holds 16 points per patch of the nI x nJ grid (nI, nJ >= 1)
+/// and betaU, betaV one per control row (nI + 1, nJ + 1).
 PointMatrix tensorControlNet(const PointMatrix& bezier, int nI, int nJ, const Eigen::VectorXd& betaU,
                              const Eigen::VectorXd& betaV);
 

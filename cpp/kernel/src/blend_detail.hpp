@@ -1,7 +1,9 @@
 // Internal helpers of the blend complexes (Section 4.2 and Section 5 of Karčiauskas &
-// Peters), shared by the C2 (blend_surface.cpp) and C1 (G1 to C1) constructions.
+// Peters), shared by the C2 (blend_profile.cpp, blend_ring.cpp, blend_surface.cpp, blend_grid.cpp)
+// and C1 (blend_c1.cpp) constructions.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <string>
 #include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
@@ -19,6 +21,26 @@ Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix
 /// Bézier patch (knots inside it).
 Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, int& du,
                       int& dv);
+
+/// The exact rational Bézier Geom_BSplineSurface over [0,1]^2 of homogeneous rows (w p, w),
+/// row a (degreeV + 1) + b holding b_ab. Throws InputError naming `what` for control points
+/// that are not finite, for a non-positive weight, or where OpenCASCADE rejects the patch.
+Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int degreeU, int degreeV,
+                                              const std::string& what);
+
+/// The interface data of a straight profile rho = radius0 + slope z over `heights` (checked
+/// by checkHeights), for the C2 and the C1 shapes alike: (rho, zeta) at the last and first
+/// height, the unit direction leaving each, and the length of the end pieces.
+template <class Profile>
+void setLineEnds(Profile& p, double radius0, double slope, const Eigen::VectorXd& heights) {
+  const Eigen::Index m = heights.size() - 1;
+  p.end << radius0 + slope * heights[m], heights[m];
+  p.tangent = Eigen::Vector2d(slope, 1.0).normalized();
+  p.size = heights[m] - heights[m - 1];
+  p.start << radius0 + slope * heights[0], heights[0];
+  p.startTangent = -p.tangent;
+  p.startSize = heights[1] - heights[0];
+}
 
 /// Heights of a cylinder or cone profile (radius radius0 + slope z): at least two, finite,
 /// increasing, with a positive radius at each. Throws InputError naming the first offender.

@@ -1,10 +1,12 @@
-// Internal: the fairest solver of Algorithm 2 in the normalized frame (C_0 = 0, T_0 = +x,
-// |C_4| = 1, a left turn with the curvature falling from C_0), exposed for the tests.
+// Internal: the fairest solver of Algorithm 2 (analytic_centre.cpp) in the normalized frame
+// (C_0 = 0, T_0 = +x, |C_4| = 1, a left turn with the curvature falling from C_0), exposed
+// for the tests.
 // Unknowns x = (s, lambda, C^2_1): C^1_0 = (s, 0), C^1_3 = lambda T; eqs. (3), (5) and the
 // end conditions fix C^2_0 and C^2_2 linearly.
 #pragma once
-#include <optional>
 #include <Eigen/Core>
+#include <array>
+#include <optional>
 
 namespace fairsplines::detail {
 
@@ -28,5 +30,9 @@ std::optional<Eigen::Vector4d> interiorStart(const Eigen::Vector2d& P, const Eig
 /// every iterate stays interior. `iterations` receives the number of Newton steps.
 Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Eigen::Vector2d& P, const Eigen::Vector2d& T,
                                int& iterations);
+
+/// The normalized poles C_0..C_4 of x (C_0 = 0, C_4 = P): C_1 = (s / 3, 0), C_2 = C_1 + D_1 / 1.5,
+/// C_3 = P - lambda T / 3.
+std::array<Eigen::Vector2d, 5> polesOf(const Eigen::Vector4d& x, const Eigen::Vector2d& P, const Eigen::Vector2d& T);
 
 }  // namespace fairsplines::detail

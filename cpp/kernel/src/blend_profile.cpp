@@ -1,0 +1,144 @@
+// Profiles of the shapes of revolution in the (distance from the axis, height) plane, and
+// the tensor rows of a revolved shape: Karčiauskas & Peters, Section 4.1 (the C2 sextic
+// pieces of a circle), eq. (2) (its G2 cubic pieces); see blend_surface_detail.hpp.
+#include <cmath>
+#include <string>
+
+#include "fairsplines/errors.hpp"
+#include "blend_detail.hpp"
+#include "blend_surface_detail.hpp"
+
+namespace fairsplines {
+namespace detail {
+
+// ---------------------------------------------------------------------------------------
+// A surface of revolution in tensor form (docs/READINGS.md, blending paper)
+
+Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile) {
+  const Eigen::Index ku = circle.rows(), kv = profile.rows();
+  Homogeneous4 out(ku * kv, 4);
+  for (Eigen::Index a = 0; a < ku; ++a) {
+    for (Eigen::Index b = 0; b < kv; ++b) {
+      const double weight = profile(b, 2) * circle(a, 2);
+      const Eigen::Vector3d p = profile(b, 0) * circle(a, 0) * f.x + profile(b, 0) * circle(a, 1) * f.y +
+                                profile(b, 1) * circle(a, 2) * f.z + weight * f.origin;
+      out.row(a * kv + b) << p.transpose(), weight;
+    }
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Profiles: circles (sphere zone, torus) and lines (cone, cylinder)
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+
+/// Section 4.2 for a shape of revolution with its interface at the profile's end.
+/// Throws InputError where the profile's end (the interface) lies on the axis.
+void checkInterfaceOffAxis(const RevolvedProfile& profile, const char* which) {
+  if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
+    throw InputError(std::string("the interface at the ") + which +
+                     " of the profile lies on the axis (a pole): there is nothing to join there; join at the other end");
+  }
+}
+
+}  // namespace
+
+RevolvedProfile reversedProfile(const RevolvedProfile& p) {
+  RevolvedProfile r;
+  for (auto it = p.cubic.rbegin(); it != p.cubic.rend(); ++it) r.cubic.push_back(it->colwise().reverse());
+  for (auto it = p.sextic.rbegin(); it != p.sextic.rend(); ++it) r.sextic.push_back(it->colwise().reverse());
+  const Eigen::Index m = p.sexticKnots.size() - 1;
+  r.sexticKnots.resize(m + 1);
+  for (Eigen::Index j = 0; j <= m; ++j) r.sexticKnots[j] = p.sexticKnots[m] - p.sexticKnots[m - j];
+  r.end = p.start;
+  r.tangent = p.startTangent;
+  r.size = p.startSize;
+  r.start = p.end;
+  r.startTangent = p.tangent;
+  r.startSize = p.size;
+  return r;
+}
+
+RevolvedProfile circleProfile(double rhoOffset, double r, const Eigen::VectorXd& angles, CircleReparam method) {
+  const G2CircleSpline c = g2Circle(angles);
+  if (c.closed) throw InputError("a closed profile circle has no boundary to blend at; give an open range of angles");
+  RevolvedProfile p;
+  auto map = [&](const Eigen::RowVectorXd& h) {
+    Eigen::RowVector3d out;
+    out << rhoOffset * h[2] + r * h[0], r * h[1], h[2];
+    return out;
+  };
+  for (int j = 0; j < c.pieces(); ++j) {
+    Homogeneous3 q(4, 3);
+    for (int k = 0; k < 4; ++k) q.row(k) = map(c.cubic.row(4 * j + k));
+    p.cubic.push_back(q);
+  }
+  const C2SexticSpline c2 = circleToC2(c, method);
+  for (int j = 0; j < c2.pieces(); ++j) {
+    Homogeneous3 q(7, 3);
+    for (int k = 0; k < 7; ++k) q.row(k) = map(c2.bezier.row(7 * j + k));
+    p.sextic.push_back(q);
+  }
+  p.sexticKnots = c2.knots();
+  const double phi = c.theta[c.pieces()];
+  p.end << rhoOffset + r * std::cos(phi), r * std::sin(phi);
+  p.tangent << -std::sin(phi), std::cos(phi);
+  p.size = r * c.alpha[c.pieces() - 1];
+  const double phi0 = c.theta[0];
+  p.start << rhoOffset + r * std::cos(phi0), r * std::sin(phi0);
+  p.startTangent << std::sin(phi0), -std::cos(phi0);
+  p.startSize = r * c.alpha[0];
+  return p;
+}
+
+RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd& heights) {
+  detail::checkHeights(heights, radius0, slope);
+  const int m = static_cast<int>(heights.size()) - 1;
+  RevolvedProfile p;
+  for (int j = 0; j < m; ++j) {
+    Homogeneous3 q(4, 3);
+    for (int k = 0; k < 4; ++k) {
+      const double z = heights[j] + (heights[j + 1] - heights[j]) * k / 3.0;
+      q.row(k) << radius0 + slope * z, z, 1.0;
+    }
+    p.cubic.push_back(q);
+    const PointMatrix raised = raiseCubicToSextic(PointMatrix(q));
+    p.sextic.push_back(Homogeneous3(raised));
+  }
+  p.sexticKnots = heights.array() - heights[0];
+  setLineEnds(p, radius0, slope, heights);
+  return p;
+}
+
+RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, CircleReparam method) {
+  if (!(radius > 0) || !std::isfinite(radius)) throw InputError("a sphere needs a positive radius");
+  for (Eigen::Index j = 0; j < latitudes.size(); ++j) {
+    if (!(std::abs(latitudes[j]) <= kPi / 2 + 1e-15)) throw InputError("latitudes must lie in [-pi/2, pi/2]");
+  }
+  return circleProfile(0.0, radius, latitudes, method);
+}
+
+RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV, CircleReparam method) {
+  if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
+  return circleProfile(R, r, anglesV, method);
+}
+
+// ---------------------------------------------------------------------------------------
+// The interface and the circle around the axis
+
+RevolvedProfile atInterface(const RevolvedProfile& p, Interface at) {
+  RevolvedProfile out = at == Interface::End ? p : reversedProfile(p);
+  checkInterfaceOffAxis(out, at == Interface::End ? "end" : "start");
+  return out;
+}
+
+G2CircleSpline checkedLongitudes(const ShapeFrame& frame, const Eigen::VectorXd& longitudes) {
+  frame.check();
+  return g2Circle(longitudes);  // a full turn (closed in u) or a partial one (open)
+}
+
+}  // namespace detail
+}  // namespace fairsplines

@@ -1,0 +1,92 @@
+// Internal: the parts of the C2 blends of shapes of revolution (Section 4.2 of Karčiauskas &
+// Peters) that several sources share: the profiles (blend_profile.cpp), the default ring
+// (blend_ring.cpp), the transition strip and the assembly of a complex (blend_surface.cpp),
+// on which the joins and the edited structures (blend_join.cpp) build.
+#pragma once
+#include <Geom_BSplineSurface.hxx>
+#include <vector>
+
+#include "fairsplines/blend_surface.hpp"
+#include "fairsplines/g2_to_c2.hpp"
+
+namespace fairsplines::detail {
+
+// ---------------------------------------------------------------------------------------
+// Profiles of the shapes of revolution (blend_profile.cpp)
+
+/// The profile of a shape of revolution in the (distance from the axis, height) plane, as
+/// G2 cubic pieces (eq. (2) for circles, degree-raised lines) and as C2 sextic pieces
+/// (Section 4.1), with the interface at its end.
+struct RevolvedProfile {
+  std::vector<Homogeneous3> cubic;   ///< 4 homogeneous rows (rho w, zeta w, w) per piece
+  std::vector<Homogeneous3> sextic;  ///< 7 rows per piece, C2 in homogeneous space
+  Eigen::VectorXd sexticKnots;       ///< pieces + 1 knots of the sextic pieces
+  Eigen::Vector2d end, tangent;      ///< (rho, zeta) at the interface and the unit direction leaving it
+  double size = 1.0;                 ///< length scale of the last piece (for the default ring)
+  Eigen::Vector2d start, startTangent;  ///< the same at the profile's start (direction leaving it backwards)
+  double startSize = 1.0;
+};
+
+/// The profile run backwards, so that its start becomes the interface at its end. Pieces and
+/// their Bézier rows in reverse order; the knots mirrored.
+RevolvedProfile reversedProfile(const RevolvedProfile& p);
+
+/// A circle profile: centre (rhoOffset, 0), radius r, partition `angles` (the circle's
+/// pieces (x, y, w) map to (rhoOffset w + r x, r y, w)).
+RevolvedProfile circleProfile(double rhoOffset, double r, const Eigen::VectorXd& angles, CircleReparam method);
+
+/// A straight profile rho = radius0 + slope z over increasing heights: degree-raised
+/// lines (beta_j = h_j / h_{j-1}, gamma_j = 0), which are already C2 over the heights.
+RevolvedProfile lineProfile(double radius0, double slope, const Eigen::VectorXd& heights);
+
+/// The sphere's profile: the circle of `radius` about the origin over `latitudes` (in
+/// [-pi/2, pi/2]). Throws InputError for a radius that is not positive and finite, or a
+/// latitude outside that range.
+RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, CircleReparam method);
+
+/// The torus's profile: the circle of radius r about (R, 0) over `anglesV`. Throws
+/// InputError unless 0 < r < R, R finite.
+RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV, CircleReparam method);
+
+/// The profile with the interface at its end: as it is (Interface::End) or reversed.
+/// Throws InputError where that end (the interface) lies on the axis.
+RevolvedProfile atInterface(const RevolvedProfile& p, Interface at);
+
+/// The G2 circle of the longitudes around the frame's axis: a full turn (closed in u) or a
+/// partial one (open). Throws InputError for a frame that is not orthonormal or longitudes
+/// g2Circle refuses.
+G2CircleSpline checkedLongitudes(const ShapeFrame& frame, const Eigen::VectorXd& longitudes);
+
+// ---------------------------------------------------------------------------------------
+// The default free-form ring (blend_ring.cpp)
+
+/// The default free-form ring after a profile's end: 4 rows along the end tangent, the
+/// first half the last piece's length beyond the interface, a quarter apart; in u one
+/// pole per longitude (Boehm's form: pole i centred on knot u_i), periodic cubic.
+Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& p,
+                                        const Eigen::VectorXd& knotsU);
+
+// ---------------------------------------------------------------------------------------
+// The transition strip and the assembly of a complex (blend_surface.cpp)
+
+/// The transition patch of u-piece k (row vPiece, degree (degreeU, 5)) from the Hermite data
+/// of the patch below (`lower`, degree dvLower in v) and the one above (`upper`).
+TaggedPatch stripPatch(int k, int vPiece, int degreeU, const Homogeneous4& lower, int dvLower,
+                       const Homogeneous4& upper, int dvUpper);
+
+/// The basic side of a blend along u: one C2 sextic spline per control layer of the basic
+/// rows (layer J (dv + 1) + s holds Bézier index s in v of row J), all on the same pieces.
+struct BasicLayers {
+  std::vector<C2SexticSpline> layers;
+  int rows = 0, dv = 3;
+  Eigen::VectorXd knotsV;  ///< rows + 1 values
+  bool c2InV = false;
+};
+
+/// Section 4.2 from the basic side's layers (C2 along u): the ring (default, or a user's
+/// with its period mapped onto the circle's and the pieces split at its knots), then the
+/// patches and the (6,5) strip from three layers on each side.
+BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
+                           BasicLayers basic, Handle(Geom_BSplineSurface) ring);
+
+}  // namespace fairsplines::detail
