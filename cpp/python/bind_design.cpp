@@ -14,6 +14,7 @@
 #include "shape_capsule.hpp"
 #include "fairsplines/basic_curves.hpp"
 #include "fairsplines/design.hpp"
+#include "fairsplines/design_samples.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surfaces.hpp"
 
@@ -99,6 +100,13 @@ void bindDesign(py::module_& m) {
   m.def("piece_polygon", &piecePolygon, "curve"_a, "marks"_a);
   m.def("polygon_from_jets", &polygonFromJets, "f"_a, "df"_a, "d2f"_a, "marks"_a);
   m.def("quintic_pieces", &quinticPieces, "curve"_a, "marks"_a);
+  m.def(
+      "samples_polygon",
+      [](PointsRef q, const std::string& parametrization, double epsilon, EpsilonRule rule) {
+        return samplesPolygon(q, CsrOptions{parseParametrization(parametrization), false, epsilon, rule, {}});
+      },
+      "points"_a, "parametrization"_a = "chordal", "epsilon"_a = 1e-9, "rule"_a = EpsilonRule::CaseDistinction,
+      "The unifying spline's sampled piece: the csr-spline (Section 4, eq. (6)) as a piece polygon.");
   m.def(
       "merge_pieces",
       [](const std::vector<PiecePolygon>& pieces, double joinTolerance) {
