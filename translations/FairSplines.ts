@@ -742,6 +742,11 @@
         <source>{} mark(s) added to keep the weights positive</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>{} samples, no marks: this part of the curve is their csr-spline</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>FairSplines_AnalysisGroup</name>

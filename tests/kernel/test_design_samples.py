@@ -258,3 +258,18 @@ BAD = [
 def test_bad_samples_raise_input_error_naming_the_problem(call, message):
     with pytest.raises(fw.InputError, match=message):
         call()
+
+
+def test_the_c2_referee_sees_a_jump_of_the_second_derivative():
+    """c2_jumps itself: a curve made C1 at one knot (a double knot, a pole moved) is caught."""
+    samples, cubic = fig1()
+    c = fw.design_spline([fw.basic.Samples(samples), (cubic, [0.3, 0.6])])
+    assert max(c2_jumps(c)) < C2
+    knots = c.getKnots()
+    k = 0.5 * (knots[3] + knots[4])
+    c.insertKnot(k, 2)
+    index = [i for i, t in enumerate(c.getKnots()) if t == k][0]
+    pole = sum(c.getMultiplicities()[:index]) - 1  # the pole the double knot frees
+    c.setPole(pole, c.getPole(pole) + V(1e-3, 0, 0))
+    d1, d2 = c2_jumps(c)
+    assert d1 < C2 and d2 > 1e-4
