@@ -20,7 +20,7 @@ V = FreeCAD.Vector
 # DISTANCE x the samples' size of every sample (the farthest is a join's sample: the shared
 # control point of an agreeing join is not on the curve), and every sample but the first two
 # and the last two is exactly as near as to the csr-spline alone (the join changes only the
-# piece's first and last two knot intervals). Measured: 1.4e-3 at most, at a join.
+# piece's first and last two knot intervals). Measured: 1.2e-3 at most, at a join.
 DISTANCE = 2e-3
 EXACT = 1e-12   # the exact pieces, relative to their size
 C2 = 1e-10      # jumps of the first and second derivative at the knots, relative
