@@ -138,3 +138,32 @@ def test_bad_samples_keep_the_last_good_shape_and_say_why(doc):
     cloud.Points = Points.Points(vectors[:5] + [vectors[4]] + vectors[5:])
     doc.recompute()
     assert "points 4 and 5 coincide" in design.Status, design.Status
+
+
+def test_undo_and_redo_of_a_design_with_a_sampled_piece_and_of_its_points_change(doc):
+    doc.UndoMode = 1
+    vectors = quarter_samples()
+    cloud, sketch = points_object(doc, vectors), arc_sketch(doc)
+    doc.openTransaction("sources")
+    doc.commitTransaction()
+    design = make_design_spline(doc, [(cloud, None), ((sketch, "Edge1"), ARC_MARKS)], join_tolerance=1e-6)
+    assert doc.UndoNames[0] == "Create design spline"
+    first = arrays(design)
+    doc.openTransaction("move points")
+    cloud.Points = Points.Points([V(v.x * 1.05, v.y, 0) for v in vectors[:-1]] + [vectors[-1]])
+    doc.recompute()
+    doc.commitTransaction()
+    assert not np.allclose(arrays(design)[0], first[0])
+    doc.undo()
+    doc.recompute()
+    for x, y in zip(arrays(design), first):
+        np.testing.assert_array_equal(x, y)
+    doc.undo()
+    assert doc.getObject("DesignSpline") is None
+    doc.redo()
+    design = doc.getObject("DesignSpline")
+    assert design is not None
+    doc.recompute()
+    assert design.Status == "ok", design.Status
+    for x, y in zip(arrays(design), first):
+        np.testing.assert_array_equal(x, y)
