@@ -78,7 +78,8 @@ def design_spline(pieces: Sequence[Union[Samples, tuple[Union[BasicCurve, Sample
     """
     if isinstance(pieces, tuple) and len(pieces) == 2 and not isinstance(pieces[0], (tuple, Samples)):
         pieces = [pieces]
-    if isinstance(pieces, Samples):
+    if isinstance(pieces, Samples) or (isinstance(pieces, tuple) and len(pieces) == 2
+                                       and isinstance(pieces[0], Samples) and pieces[1] is None):
         pieces = [pieces]
     if isinstance(pieces, (str, bytes)) or not hasattr(pieces, "__iter__"):
         raise InputError(f"pieces must be a list of (basic curve, marks) pairs, got {pieces!r}")

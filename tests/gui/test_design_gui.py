@@ -746,3 +746,29 @@ def test_mark_points_shows_a_sampled_piece_without_sliders(scene):
         assert isinstance(panel, MarkPointsPanel)
     finally:
         panel.reject()
+
+
+def test_design_spline_command_takes_a_selected_points_object_as_a_sampled_piece(scene):
+    import Points
+
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
+
+    doc, sketch, chain = scene
+    a = np.linspace(1.5 * math.pi, math.pi, 12)
+    cloud = doc.addObject("Points::Feature", "Samples")
+    cloud.Points = Points.Points([V(25 + 5 * math.cos(x), 5 * math.sin(x), 0) for x in a])
+    doc.recompute()
+    select(doc, cloud, (sketch, chain[0]))
+    assert is_active("FairSplines_DesignSpline")
+    before = {o.Name for o in doc.Objects}
+    run("FairSplines_DesignSpline")
+    (design,) = new_objects(doc, before)
+    assert design.Status == "ok", design.Status
+    assert [(source.Name, sub) for source, sub in piece_links(design)] == [(cloud.Name, ""), (sketch.Name, chain[0])]
+    assert list(design.MarkCounts) == [0, 4]
+    expected = fw.design_spline([fw.basic.Samples(cloud.Points.Points),
+                                 (fw.basic.from_edge(sketch.Shape.getElement(chain[0])), get_marks(design)[1])])
+    np.testing.assert_array_equal(poles(design), poles(expected))
+    panel = design.ViewObject.Proxy.panel
+    assert isinstance(panel, MarkPointsPanel) and panel.rows[0] == [] and len(panel.rows[1]) == 4
+    panel.reject()

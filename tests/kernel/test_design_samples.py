@@ -220,7 +220,8 @@ def test_the_sampled_part_is_the_csr_spline_of_its_samples_away_from_its_joins()
 def test_samples_alone_and_their_to_part_are_the_csr_spline():
     samples = spiral_samples(30)
     csr = fw.csr_spline(samples)
-    for curve in (fw.design_spline([fw.basic.Samples(samples)]), fw.basic.Samples(samples).to_part()):
+    for curve in (fw.design_spline([fw.basic.Samples(samples)]), fw.design_spline(fw.basic.Samples(samples)),
+                  fw.design_spline((fw.basic.Samples(samples), None)), fw.basic.Samples(samples).to_part()):
         a, b = csr.FirstParameter, csr.LastParameter
         for v in np.linspace(0, 1, 100):
             assert (curve.value(v) - csr.value(a + (b - a) * v)).Length < 1e-13

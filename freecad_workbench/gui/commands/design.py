@@ -118,7 +118,8 @@ class DesignSplineCommand:
             QT_TRANSLATE_NOOP(
                 "FairSplines_DesignSpline",
                 "One smooth (C2) spline through the selected basic curves, in pick order: edges of\n"
-                "sketches or Part objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.",
+                "sketches or Part objects (lines, arcs, conics) or Basic curve objects; a Points object or a\n"
+                "sketch of points is a sampled piece (its csr-spline). Then mark points on them.",
             ),
             SECTION,
             accel="F, D",
