@@ -5,6 +5,8 @@ Every basic curve is parameterised over u in [0, 1] and offers ``value(u)``,
 eq. (5) for the others) and ``to_part()`` (FreeCAD geometry: the native conic arc where
 FreeCAD has one, else a B-spline). Conics and rational cubics are converted exactly
 (Section 6); spirals, involutes and user curves are approximated (Section 5).
+``Samples(points)`` is the third kind of piece, data without a parameterization: its
+part of a design is its csr-spline (Section 4; the unifying spline of Section 1, Fig. 1).
 
     import freecad_workbench as fw
     arc = fw.basic.CircleArc(center=(0, 0, 0), radius=1, start_angle=0, end_angle=math.pi)
@@ -36,6 +38,7 @@ __all__ = [
     "ArchimedeanSpiral",
     "CircleInvolute",
     "ParametricCurve",
+    "Samples",
     "from_edge",
 ]
 
@@ -311,6 +314,55 @@ class ParametricCurve(_Transcendental):
             return (f(s + step) - 2 * f(s) + f(s - step)) / (step * step)
 
         super().__init__(kernel.ParametricCurve(lambda s: (f(s), df(s), d2f(s)), self.s0, self.s1))
+
+
+class Samples:
+    """Sampled data as a piece of fw.design_spline: the unifying spline of the csr paper
+    (Section 1, Fig. 1). Its part of the design is the csr-spline of the samples (Section 4,
+    eq. (6)), a cubic C2 B-spline with a knot per sample at the samples' parameters
+    (chordal by default); in the design its control points keep their beta_i and it joins
+    its neighbours by Fig. 9 (agree, averaged, edge; beta := 1 at the new control points),
+    see docs/READINGS.md, "The unifying spline".
+
+    points: an (N,2)/(N,3) array-like, FreeCAD Vectors or Part Vertexes, or a Points object
+        (Points.Points or a Points::Feature); N >= 3, in the order of traversal.
+    parametrization, epsilon, epsilon_rule: as for fw.csr_spline.
+    Raises InputError for fewer than 3 samples, samples that are not finite, consecutive
+    samples that coincide, all samples coincident or wrong shapes.
+    """
+
+    exact = False
+
+    def __init__(self, points: Any, parametrization: str = "chordal", epsilon: float = 1e-9,
+                 epsilon_rule: str = "case") -> None:
+        from .csr import EPSILON_RULES, PARAMETRIZATIONS
+        from .kernel import as_choice, as_points
+
+        as_choice(parametrization, "parametrization", PARAMETRIZATIONS)
+        as_choice(epsilon_rule, "epsilon_rule", EPSILON_RULES)
+        for _ in range(2):  # Points::Feature -> Points.Points -> [FreeCAD.Vector]
+            if hasattr(points, "Points") and not isinstance(points, (list, tuple, np.ndarray)):
+                points = points.Points
+        q = as_points(points, "samples")
+        if len(q) < 3:
+            raise InputError(f"a sampled piece needs at least 3 samples, got {len(q)}")
+        if q.shape[1] == 2:
+            q = np.ascontiguousarray(np.c_[q, np.zeros(len(q))])
+        self.points = q
+        self.parametrization, self.epsilon_rule = parametrization, epsilon_rule
+        self.epsilon = as_real(epsilon, "epsilon", finite=False)
+        try:
+            self._polygon = kernel.samples_polygon(q, parametrization, self.epsilon, EPSILON_RULES[epsilon_rule])
+        except InputError as exc:
+            raise InputError(f"samples: {exc}") from None
+
+    def to_part(self) -> Part.BSplineCurve:
+        """The piece alone: the csr-spline of the samples over u in [0, 1] (Part.BSplineCurve)."""
+        curve, _, _ = kernel.merge_pieces([self._polygon], 0.0)
+        return to_part(curve)
+
+    def __repr__(self):
+        return f"<Samples: {len(self.points)} from {tuple(self.points[0])} to {tuple(self.points[-1])}>"
 
 
 def _reversed(geometry):

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, Sequence, Union
 import numpy as np
 
 from . import kernel
-from .basic import BasicCurve, from_edge
+from .basic import BasicCurve, Samples, from_edge
 from .errors import InputError
 from .kernel import CurveLike, VectorLike, as_count, as_flag, as_real, from_part, to_part
 
@@ -44,21 +44,31 @@ def piece_marks(curve, marks, tolerance=1e-9):
 
 
 def _piece(item, index):
+    if isinstance(item, Samples):
+        return item, None
     try:
         curve, marks = item
     except (TypeError, ValueError):
         raise InputError(f"piece {index} must be a pair (basic curve, marks)") from None
+    if isinstance(curve, Samples):
+        if marks is not None and (isinstance(marks, (str, bytes)) or not hasattr(marks, "__len__") or len(marks)):
+            raise InputError(f"piece {index}: a Samples piece takes no marks (its samples are its knots), "
+                             f"got {marks!r}")
+        return curve, None
     if not isinstance(curve, BasicCurve):
         curve = from_edge(curve)
     return curve, marks
 
 
-def design_spline(pieces: Sequence[tuple[Union[BasicCurve, Part.Edge], Sequence[Any]]], join_tolerance: float = 1e-6,
+def design_spline(pieces: Sequence[Union[Samples, tuple[Union[BasicCurve, Samples, Part.Edge], Sequence[Any]]]],
+                  join_tolerance: float = 1e-6,
                   details: bool = False) -> Union[Part.BSplineCurve, DesignResult]:
     """One cubic C2 NURBS from basic curve pieces with marks.
 
     pieces: list of (basic_curve, marks); basic_curve is a fw.basic curve or a FreeCAD
         edge (lines and conics); marks are parameters in [0, 1] or points on the curve.
+        A fw.basic.Samples piece stands alone (or as (samples, None)): its part of the
+        curve is the csr-spline of its samples (Section 4), joined like any piece (Fig. 9).
     join_tolerance: end points of consecutive pieces closer than this (model units) are
         averaged into one control point; farther apart they are joined by an edge; equal
         end points are shared.
@@ -66,7 +76,10 @@ def design_spline(pieces: Sequence[tuple[Union[BasicCurve, Part.Edge], Sequence[
     second last (to their free end at the ends of the design); spirals and other curves
     are approximated (Section 5). Raises InputError on bad input.
     """
-    if isinstance(pieces, tuple) and len(pieces) == 2 and not isinstance(pieces[0], tuple):
+    if isinstance(pieces, tuple) and len(pieces) == 2 and not isinstance(pieces[0], (tuple, Samples)):
+        pieces = [pieces]
+    if isinstance(pieces, Samples) or (isinstance(pieces, tuple) and len(pieces) == 2
+                                       and isinstance(pieces[0], Samples) and pieces[1] is None):
         pieces = [pieces]
     if isinstance(pieces, (str, bytes)) or not hasattr(pieces, "__iter__"):
         raise InputError(f"pieces must be a list of (basic curve, marks) pairs, got {pieces!r}")
@@ -78,6 +91,9 @@ def design_spline(pieces: Sequence[tuple[Union[BasicCurve, Part.Edge], Sequence[
     polygons = []
     for index, item in enumerate(pieces):
         curve, marks = _piece(item, index)
+        if isinstance(curve, Samples):  # its csr-spline's polygon, made and checked when it was built
+            polygons.append(curve._polygon)
+            continue
         try:
             polygons.append(kernel.piece_polygon(curve._curve, piece_marks(curve, marks)))
         except InputError as exc:

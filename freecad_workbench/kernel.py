@@ -70,6 +70,7 @@ piece_polygon = _kernel.piece_polygon
 merge_pieces = _kernel.merge_pieces
 complete_marks = _kernel.complete_marks
 quintic_pieces = _kernel.quintic_pieces
+samples_polygon = _kernel.samples_polygon  # the sampled piece (basic.Samples)
 revolve = _kernel.revolve
 # Curve analysis (analysis.py).
 curvature_profile = _kernel.curvature_profile

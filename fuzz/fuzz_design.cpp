@@ -1,11 +1,13 @@
 // Design with basic curves (design.hpp): one to four basic curves with marks, each to its
 // control polygon (Section 6 exact for conics and rational Béziers, Section 5 from the
 // quintics of eq. (7) otherwise), and the Fig. 9 merge into one C2 cubic NURBS, with
-// pieces whose ends agree, nearly agree or are apart.
+// pieces whose ends agree, nearly agree or are apart; then a sampled piece (the csr-spline
+// of samples, the unifying spline of Fig. 1) among them, merged again.
 #include <algorithm>
 #include <vector>
 
 #include "fairsplines/design.hpp"
+#include "fairsplines/design_samples.hpp"
 #include "fuzz_basic.hpp"
 
 using namespace fairsplines;
@@ -84,6 +86,20 @@ int fuzzOne(FuzzInput& in) {
     requireFinite("mergePieces", "piece range t0", r.t0);
     requireFinite("mergePieces", "piece range scale", r.scale);
   }
+  // The unifying spline (design_samples.hpp): a sampled piece, the csr-spline of samples,
+  // put among the basic pieces and merged with them. Read after everything above, so the
+  // older seeds still take the paths they took.
+  if (in.exhausted()) return 0;
+  const PointMatrix q = samplePoints(in, 24);
+  note("samples", q);
+  PiecePolygon sampled;
+  if (!guarded("samplesPolygon", [&] { sampled = samplesPolygon(q); })) return 0;
+  requireFinitePolygon("samplesPolygon", sampled);
+  const int at = in.count(0, static_cast<int>(polygons.size()));
+  polygons.insert(polygons.begin() + at, sampled);
+  Design unified;
+  if (!guarded("mergePieces with samples", [&] { unified = mergePieces(polygons, joinTolerance); })) return 0;
+  requireValid("mergePieces with samples", unified.curve);
   return 0;
 }
 

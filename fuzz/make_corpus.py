@@ -238,6 +238,17 @@ seed("fuzz_design", "edge_circle_radius_1.7e308",  # issue 13: design_spline of 
      marks(curve(Enc().count(1, 1), 1, [1.7e308, 0.0, 3.0, 0]), 0.5, [0.5]).byte(255).byte(0))
 seed("fuzz_design", "edge_marks_nan",
      curve(Enc().count(1, 1), 1, [1.0, 0.0, 1.0, 0]).count(2, 0).byte(255).numbers([0.5, NAN]).byte(255).byte(0))
+# Then a sampled piece (the unifying spline): samples on a circle, put at the given position.
+seed("fuzz_design", "circle_arc_then_samples",
+     points_circle(marks(curve(Enc().count(1, 1), 1, [2.0, 0.0, 2.0, 0]), 0.25, [0.25, 0.25, 0.25]).byte(255)
+                   .byte(0), 10, 2.0, 0.0, 1.0).count(1, 0))
+seed("fuzz_design", "samples_between_arc_and_line",
+     points_circle(marks(marks(curve(Enc().count(2, 1), 1, [1.0, 0.0, 1.5, 0]), 0.5, [0.5, 0.5]).byte(255)
+                         .byte(0).flag(False).vector((2.0, 0.0, 0.0)), 1.0, [1.0]).byte(255).byte(0),
+                   12, 1.0, 0.3, 0.5).count(1, 0))
+seed("fuzz_design", "samples_coincident_refused",
+     points_raw(marks(curve(Enc().count(1, 1), 1, [2.0, 0.0, 2.0, 0]), 0.25, [0.25, 0.25]).byte(255).byte(0),
+                [(0.0, 0.0), (1.0, 1.0), (1.0, 1.0), (2.0, 0.0)]))
 
 
 # --- fuzz_monotone ---------------------------------------------------------------------------

@@ -742,6 +742,11 @@
         <source>{} mark(s) added to keep the weights positive</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>{} samples, no marks: this part of the curve is their csr-spline</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>FairSplines_AnalysisGroup</name>
@@ -905,7 +910,8 @@ in a tab of the main window, with the curvature extrema marked.</source>
     <message>
         <location filename="../freecad_workbench/gui/commands/design.py"/>
         <source>One smooth (C2) spline through the selected basic curves, in pick order: edges of
-sketches or Part objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.</source>
+sketches or Part objects (lines, arcs, conics) or Basic curve objects; a Points object or a
+sketch of points is a sampled piece (its csr-spline). Then mark points on them.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -14,6 +14,7 @@
 #include "shape_capsule.hpp"
 #include "fairsplines/basic_curves.hpp"
 #include "fairsplines/design.hpp"
+#include "fairsplines/design_samples.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surfaces.hpp"
 
@@ -111,6 +112,13 @@ void bindDesign(py::module_& m) {
         "Section 5: the control polygon from the 2-jets (points, first and second derivatives) at the marks.");
   m.def("quintic_pieces", &quinticPieces, "curve"_a, "marks"_a,
         "The curve's quintic Bézier pieces between its marks (6 rows each).");
+  m.def(
+      "samples_polygon",
+      [](PointsRef q, const std::string& parametrization, double epsilon, EpsilonRule rule) {
+        return samplesPolygon(q, CsrOptions{parseParametrization(parametrization), false, epsilon, rule, {}});
+      },
+      "points"_a, "parametrization"_a = "chordal", "epsilon"_a = 1e-9, "rule"_a = EpsilonRule::CaseDistinction,
+      "The unifying spline's sampled piece: the csr-spline (Section 4, eq. (6)) as a piece polygon.");
   m.def(
       "merge_pieces",
       [](const std::vector<PiecePolygon>& pieces, double joinTolerance) {

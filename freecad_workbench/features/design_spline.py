@@ -12,7 +12,12 @@ Pieces (`Pieces`, in order) are links to
   the edge is in the document (placements of the object and its containers applied);
 - a BasicCurve object (whole, or its ``"Edge1"``): its exact basic curve, spirals and
   involutes included;
-- any other whole object with exactly one such edge.
+- any other whole object with exactly one such edge;
+- sampled data (the unifying spline, csr paper Fig. 1): a whole Points object, a whole
+  sketch whose geometry is points only, or any other whole object with vertices and no
+  edges. Its points, in their stored order, become a `fw.basic.Samples` piece: its part of
+  the curve is their csr-spline (Section 4). A sampled piece has no marks (its samples are
+  its knots); its MarkCounts entry is 0.
 
 Marks are parameters in [0, 1] of each piece, strictly increasing, in the piece's
 direction of travel in the design. They are stored flat in `Marks`, `MarkCounts` giving
@@ -39,6 +44,7 @@ from .. import basic, preferences
 from ..design import design_spline, piece_marks
 from ..errors import InputError
 from .basic_curve import is_basic_curve
+from .csr_fit import _object_points
 from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
@@ -49,7 +55,8 @@ DEFAULT_JOIN_TOLERANCE = 1e-6
 
 _PROPERTIES = (
     ("App::PropertyLinkSubList", "Pieces",
-     "Basic curves in order: edges (lines, arcs, conics) of sketches or Part objects, or BasicCurve objects",
+     "Basic curves in order: edges (lines, arcs, conics) of sketches or Part objects, or BasicCurve objects; "
+     "Points objects or sketches of points as sampled pieces",
      None, 0),
     ("App::PropertyFloatList", "Marks",
      "Mark parameters in [0, 1], piece after piece (MarkCounts says how many belong to each)", None, 0),
@@ -119,6 +126,12 @@ def resolve_piece(source, sub=""):
     element = sub.rsplit(".", 1)[-1] if sub else ""
     if is_basic_curve(source) and element in ("", "Edge1"):
         return source.Proxy.basic_curve(source)
+    if not element and is_samples_source(source):
+        points, _, _ = _object_points(source, 2)
+        try:
+            return basic.Samples(points)
+        except InputError as exc:
+            raise InputError(f"{label}: {exc}") from None
     if element:
         try:
             shape = Part.getShape(source, sub, needSubElement=True)
@@ -139,9 +152,31 @@ def resolve_piece(source, sub=""):
     return basic.from_edge(edge)
 
 
+def is_samples_source(source):
+    """Whether a whole object gives a sampled piece: a Points object, a sketch of points
+    only, or a shape with vertices and no edges."""
+    if source.isDerivedFrom("Points::Feature"):
+        return True
+    if source.isDerivedFrom("Sketcher::SketchObject"):
+        geometry = list(source.Geometry)
+        return bool(geometry) and all(isinstance(g, Part.Point) for g in geometry)
+    shape = getattr(source, "Shape", None)
+    return isinstance(shape, Part.Shape) and not shape.isNull() and not shape.Edges and bool(shape.Vertexes)
+
+
+def curve_ends(curve):
+    """The start and end point of a piece (a basic curve or samples) as arrays."""
+    if isinstance(curve, basic.Samples):
+        return curve.points[0], curve.points[-1]
+    return np.asarray(curve.value(0)), np.asarray(curve.value(1))
+
+
 def reversed_curve(curve):
     """The basic curve run backwards: u -> 1 - u (exact for lines, conics and rational
-    cubics; spirals, involutes and user curves keep their Section 5 route)."""
+    cubics; spirals, involutes and user curves keep their Section 5 route); samples in
+    the opposite order."""
+    if isinstance(curve, basic.Samples):
+        return basic.Samples(curve.points[::-1], curve.parametrization, curve.epsilon, curve.epsilon_rule)
     n = np.cross(getattr(curve, "x_axis", np.zeros(3)), getattr(curve, "y_axis", np.zeros(3)))
     if isinstance(curve, basic.LineSegment):
         return basic.LineSegment(curve.end, curve.start)
@@ -169,7 +204,7 @@ def auto_reversed(curves):
     first is turned to face the second, each next one to start at the nearer end."""
     if len(curves) < 2:
         return [False] * len(curves)
-    ends = [(np.asarray(c.value(0)), np.asarray(c.value(1))) for c in curves]
+    ends = [curve_ends(c) for c in curves]
 
     def gap(p, *others):
         return min(float(np.linalg.norm(p - q)) for q in others)
@@ -240,7 +275,10 @@ def design_inputs(obj):
             raise InputError(f"piece {index}: {exc}") from None
         if flags[index]:
             curve = reversed_curve(curve)
-        pieces.append((curve, marks[index]))
+        if isinstance(curve, basic.Samples) and not marks[index]:
+            pieces.append(curve)
+        else:
+            pieces.append((curve, marks[index]))
     return pieces, labels
 
 
@@ -295,7 +333,7 @@ def make_design_spline(doc, pieces, join_tolerance=None, name="DesignSpline", re
     parameters = []
     for index, piece in enumerate(marks):
         if piece is None:
-            parameters.append(list(DEFAULT_MARKS))
+            parameters.append([] if isinstance(curves[index], basic.Samples) else list(DEFAULT_MARKS))
         elif all(isinstance(m, (int, float)) for m in piece):
             parameters.append([float(m) for m in piece])
         else:

@@ -73,7 +73,8 @@ register("max_distance", [S.curve_arg, S.points_arg], valid=[S.curve_arg, S.good
 # ---- design with basic curves -------------------------------------------------------------
 marks = st.one_of(st.lists(S.number_arg, max_size=6), st.lists(st.floats(0, 1), max_size=6).map(sorted),
                   st.lists(S.vector_arg, max_size=3), S.junk)
-piece = st.one_of(st.tuples(S.basic_curve, marks), st.tuples(S.curve_arg, marks), S.junk)
+piece = st.one_of(st.tuples(S.basic_curve, marks), st.tuples(S.curve_arg, marks), S.samples_piece,
+                  st.tuples(S.samples_piece, st.one_of(st.none(), marks)), S.junk)
 register("design_spline", [st.one_of(st.lists(piece, max_size=3), piece, S.junk)],
          dict(join_tolerance=S.number_arg, details=S.flag_arg), examples=30)
 register("revolve_profile", [S.curve_arg], dict(axis_point=S.vector_arg, axis_direction=S.vector_arg), examples=20)
@@ -137,12 +138,15 @@ functions = st.sampled_from([lambda s: (s, s * s, 0.0), lambda s: (float("nan"),
                              lambda s: (s, 1e308 * s), lambda s: (0, 0, 0), lambda s: (s,), None, "f"])
 register("basic.ParametricCurve", [functions], dict(s0=N, s1=N), examples=20)
 register("basic.from_edge", [S.curve_arg], examples=30)
+register("basic.Samples", [S.points_arg], valid=GOOD_POINTS,
+         kwargs=dict(parametrization=PARAM, epsilon=S.number_arg, epsilon_rule=S.choice_arg("case", "additive")),
+         examples=40)
 register_method("basic", "value", S.basic_curve, [N], examples=20)
 register_method("basic", "d1", S.basic_curve, [N], examples=20)
 register_method("basic", "d2", S.basic_curve, [N], examples=20)
 register_method("basic", "parameter_of", S.basic_curve, [V], dict(tolerance=N), examples=20)
 register_method("basic", "size", S.basic_curve, examples=10)
-register_method("basic", "to_part", S.basic_curve, examples=10)
+register_method("basic", "to_part", st.one_of(S.basic_curve, S.samples_piece), examples=10)
 
 # ---- fw.shapes ----------------------------------------------------------------------------
 A = S.angle_list

@@ -204,6 +204,22 @@ def basic_instance(name):
 
 basic_curve = st.sampled_from(sorted(BASIC_SAMPLES)).map(basic_instance)
 
+SAMPLES_SAMPLES = {  # valid fw.basic.Samples arguments: the pieces of the unifying spline
+    "spiral": [(t / 6.28 * math.cos(t), t / 6.28 * math.sin(t)) for t in (1.6, 2.2, 2.9, 3.7, 4.6, 5.5, 6.28)],
+    "arc 3D": [(math.cos(a), math.sin(a), 0.1 * a) for a in (0.0, 0.3, 0.7, 1.2)],
+    "collinear": [(0, 0), (1, 1), (2, 2)],
+    "zigzag": [(0, 0), (1, 1), (2, 0), (3, 1), (4, 0)],
+}
+
+
+def samples_instance(name):
+    import freecad_workbench as fw
+
+    return fw.basic.Samples(SAMPLES_SAMPLES[name])
+
+
+samples_piece = st.sampled_from(sorted(SAMPLES_SAMPLES)).map(samples_instance)
+
 _LONGITUDES = [0, 1, 2.5, 4, 2 * math.pi]
 SHAPE_SAMPLES = {  # a fresh valid shape each draw (set_control edits it)
     "SphereZone": lambda fw: fw.shapes.SphereZone((0, 0, 0), 10, _LONGITUDES, [-0.5, 0.2, 0.7]),

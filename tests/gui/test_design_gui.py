@@ -715,3 +715,60 @@ def test_overlay_draws_markers_only_where_its_points_are(doc, artifacts):
     assert near(poles[4], HIGHLIGHT_COLOR) > 10
     for color in (MOVED_COLOR, HIGHLIGHT_COLOR, (0.0, 0.0, 0.0)):
         assert near(V(0, 0, 0), color) == 0, color  # nothing drawn at the origin
+
+
+def test_mark_points_shows_a_sampled_piece_without_sliders(scene):
+    """A Points object as a piece (the unifying spline): its group has no sliders and no Add
+    mark, says what it is, draws its samples; the other pieces keep their sliders."""
+    import Points
+
+    from freecad_workbench.features.design_spline import make_design_spline
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
+
+    doc, sketch, chain = scene
+    # Samples of a quarter circle of radius 5 about (25, 0), ending where the chain's line starts.
+    a = np.linspace(1.5 * math.pi, math.pi, 15)
+    cloud = doc.addObject("Points::Feature", "Samples")
+    cloud.Points = Points.Points([V(25 + 5 * math.cos(x), 5 * math.sin(x), 0) for x in a])
+    doc.recompute()
+    design = make_design_spline(doc, [(cloud, None)] + [((sketch, name), None) for name in chain])
+    assert design.Status == "ok", design.Status
+    assert list(design.MarkCounts)[0] == 0
+    panel = MarkPointsPanel(design)
+    try:
+        assert panel.rows[0] == [] and not panel.add_buttons[0].isVisibleTo(panel.form)
+        assert all(panel.add_buttons[p].isVisibleTo(panel.form) for p in (1, 2, 3))
+        assert all(len(panel.rows[p]) == 4 for p in (1, 2, 3))
+        assert "15 samples" in panel.info_labels[0].text()
+        assert len(panel.mark_points()) == 15 + 3 * 4
+        panel.set_mark(2, 0, 0.3)  # the other pieces' sliders still drive the design
+        assert design.Status == "ok" and get_marks(design)[2][0] == pytest.approx(0.3)
+        assert isinstance(panel, MarkPointsPanel)
+    finally:
+        panel.reject()
+
+
+def test_design_spline_command_takes_a_selected_points_object_as_a_sampled_piece(scene):
+    import Points
+
+    from freecad_workbench.gui.panels.mark_points import MarkPointsPanel
+
+    doc, sketch, chain = scene
+    a = np.linspace(1.5 * math.pi, math.pi, 12)
+    cloud = doc.addObject("Points::Feature", "Samples")
+    cloud.Points = Points.Points([V(25 + 5 * math.cos(x), 5 * math.sin(x), 0) for x in a])
+    doc.recompute()
+    select(doc, cloud, (sketch, chain[0]))
+    assert is_active("FairSplines_DesignSpline")
+    before = {o.Name for o in doc.Objects}
+    run("FairSplines_DesignSpline")
+    (design,) = new_objects(doc, before)
+    assert design.Status == "ok", design.Status
+    assert [(source.Name, sub) for source, sub in piece_links(design)] == [(cloud.Name, ""), (sketch.Name, chain[0])]
+    assert list(design.MarkCounts) == [0, 4]
+    expected = fw.design_spline([fw.basic.Samples(cloud.Points.Points),
+                                 (fw.basic.from_edge(sketch.Shape.getElement(chain[0])), get_marks(design)[1])])
+    np.testing.assert_array_equal(poles(design), poles(expected))
+    panel = design.ViewObject.Proxy.panel
+    assert isinstance(panel, MarkPointsPanel) and panel.rows[0] == [] and len(panel.rows[1]) == 4
+    panel.reject()

@@ -138,6 +138,24 @@ def test_mark_points_panel_fits_with_several_pieces_and_marks(active, artifacts)
     close(panel)
 
 
+def test_mark_points_panel_fits_with_a_sampled_piece(active, artifacts):
+    import Points
+
+    from freecad_workbench.features.design_spline import make_design_spline
+
+    cloud = active.addObject("Points::Feature", "Samples")
+    cloud.Points = Points.Points([V(25 + 5 * math.cos(a), 5 * math.sin(a), 0)
+                                  for a in [1.5 * math.pi - 0.05 * k * math.pi for k in range(11)]])
+    sketch = active.addObject("Sketcher::SketchObject", "Profile")
+    sketch.addGeometry(Part.LineSegment(V(20, 0, 0), V(20, 10, 0)))
+    active.recompute()
+    design = make_design_spline(active, [(cloud, None), ((sketch, "Edge1"), None)])
+    panel = open_panel(design)
+    assert_fits(panel, "Mark points panel with a sampled piece")
+    picture(panel, "mark_points_samples", artifacts)
+    close(panel)
+
+
 def test_edit_polygon_panel_fits(active, artifacts):
     from freecad_workbench.features.edit_polygon import make_edit_polygon
 

@@ -14,6 +14,7 @@ import FreeCAD
 import FreeCADGui
 
 from ...features.basic_curve import KINDS, is_basic_curve
+from ...features.design_spline import is_samples_source
 from ...features.design_spline import is_design_spline
 from ...features.edit_polygon import is_edit_polygon
 from .. import command_name
@@ -57,8 +58,9 @@ _KIND_MENU = {
 
 def usable_piece(obj, sub):
     """Whether a selection entry can be a piece of a design (a quick check: an edge or a
-    BasicCurve; whether the edge is a line or conic is checked when the design computes)."""
-    return is_basic_curve(obj) or one_edge(obj, sub)
+    BasicCurve; whether the edge is a line or conic is checked when the design computes;
+    or sampled data: a whole Points object or sketch of points)."""
+    return is_basic_curve(obj) or one_edge(obj, sub) or (not sub and is_samples_source(obj))
 
 
 class BasicCurveCommand:
@@ -116,7 +118,8 @@ class DesignSplineCommand:
             QT_TRANSLATE_NOOP(
                 "FairSplines_DesignSpline",
                 "One smooth (C2) spline through the selected basic curves, in pick order: edges of\n"
-                "sketches or Part objects (lines, arcs, conics) or Basic curve objects. Then mark points on them.",
+                "sketches or Part objects (lines, arcs, conics) or Basic curve objects; a Points object or a\n"
+                "sketch of points is a sampled piece (its csr-spline). Then mark points on them.",
             ),
             SECTION,
             accel="F, D",

@@ -11,9 +11,14 @@ polygon of the result (green, Fig. 10a). "Add mark" puts a new mark in the middl
 of the piece's widest gap; "Remove" drops a mark; "Reversed" runs the piece the other
 way (its marks stay on the same points). OK keeps the changes as one undo step, Cancel
 restores the marks the panel opened with.
+
+A sampled piece (a Points object or a sketch of points: the unifying spline of the csr
+paper's Fig. 1) has no marks: its group shows no sliders and no "Add mark", only what it
+is and "Reversed"; its samples are drawn as the piece's points.
 """
 import FreeCAD
 
+from ...basic import Samples
 from ...features.design_spline import get_marks, piece_curves, set_marks
 from .. import icon_path
 from .form import LiveEdit, LiveEditPanel, button_column, show_status, wrapped_label
@@ -96,6 +101,9 @@ class MarkPointsPanel(LiveEditPanel):
             reverse.setChecked(self.reversed[piece])
             reverse.toggled.connect(lambda flag, p=piece: self.set_reversed(p, flag))
             group_layout.addLayout(button_column(add, reverse))
+            if isinstance(curve, Samples):  # no marks: its samples are its knots
+                grid_widget.setVisible(False)
+                add.setVisible(False)
             self.pieces_layout.addWidget(group)
             self.groups.append(group)
             self.grids.append(grid)
@@ -252,7 +260,9 @@ class MarkPointsPanel(LiveEditPanel):
         """The marked points in the document, piece after piece."""
         points = []
         for piece, (_, curve, _) in enumerate(self.curves):
-            if curve is not None:
+            if isinstance(curve, Samples):
+                points.extend(FreeCAD.Vector(*p) for p in curve.points)
+            elif curve is not None:
                 points.extend(curve.value(u) for u in self.marks[piece])
         return points
 
@@ -268,6 +278,9 @@ class MarkPointsPanel(LiveEditPanel):
         for piece, info in enumerate(self.info_labels):
             label, curve, error = self.curves[piece]
             notes = []
+            if isinstance(curve, Samples):
+                notes.append(translate("FairSplines", "{} samples, no marks: this part of the curve is their "
+                                       "csr-spline").format(len(curve.points)))
             if error:
                 notes.append(error)
             if piece < len(added) and added[piece]:
