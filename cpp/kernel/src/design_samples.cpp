@@ -4,7 +4,7 @@
 #include "fairsplines/design_samples.hpp"
 
 #include "fairsplines/errors.hpp"
-#include "fairsplines/finite.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 
