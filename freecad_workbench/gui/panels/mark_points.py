@@ -71,6 +71,9 @@ class MarkPointsPanel(LiveEditPanel):
         self.form.setWindowTitle(translate("FairSplines", "Mark points"))
         self.form.setWindowIcon(QtGui.QIcon(icon_path("FairSplines_MarkPoints")))
         layout = QtWidgets.QVBoxLayout(self.form)
+        # The task box pads the panel already: the form's own side margins (9 px each under
+        # some styles) pushed it past PANEL_WIDTH when it was the first panel opened.
+        layout.setContentsMargins(0, layout.contentsMargins().top(), 0, layout.contentsMargins().bottom())
         hint = QtWidgets.QLabel(translate(
             "FairSplines",
             "Slide the marks along each basic curve. A conic stays exact from its second to its "
