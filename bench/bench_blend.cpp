@@ -7,9 +7,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "bench_timing.hpp"
 #include "fairsplines/blend_c1.hpp"
 #include "fairsplines/blend_surface.hpp"
+#include "bench_timing.hpp"
 
 using namespace fairsplines;
 using fairsplines::bench::medianSeconds;
@@ -22,14 +22,19 @@ int main() {
   Eigen::VectorXd latitudes(5);
   latitudes << -0.8, -0.3, 0.1, 0.5, 0.9;
   std::printf("sphere zone 8 x 4 + default ring, kernel (median of 200), target <= 1 ms\n");
-  struct Case { const char* name; const Eigen::VectorXd* lon; CircleReparam method; };
+  struct Case {
+    const char* name;
+    const Eigen::VectorXd* lon;
+    CircleReparam method;
+  };
   const Case cases[] = {{"uniform, rho", &uniform, CircleReparam::Rho},
                         {"non-uniform, rho", &nonUniform, CircleReparam::Rho},
                         {"non-uniform, sigma", &nonUniform, CircleReparam::Sigma},
                         {"non-uniform, mixed", &nonUniform, CircleReparam::Mixed}};
   for (const Case& c : cases) {
     std::size_t patches = 0;
-    const double s = medianSeconds([&] { patches = blendSphereZone(ShapeFrame{}, 1.0, *c.lon, latitudes, c.method).patches.size(); }, 200);
+    const double s = medianSeconds(
+        [&] { patches = blendSphereZone(ShapeFrame{}, 1.0, *c.lon, latitudes, c.method).patches.size(); }, 200);
     std::printf("  %-20s %8.3f ms  (%zu patches)\n", c.name, 1e3 * s, patches);
   }
   const double naive = medianSeconds([&] { blendSphereZoneNaive(ShapeFrame{}, 1.0, nonUniform, latitudes); }, 200);
@@ -40,9 +45,11 @@ int main() {
     C1BlendOptions options;
     options.quarticInV = quarticInV;
     std::size_t patches = 0;
-    const double c1 = medianSeconds([&] {
-      patches = blendC1(g1SphereZone(ShapeFrame{}, 1.0, nonUniform, latitudes), nullptr, options).patches.size();
-    }, 200);
+    const double c1 = medianSeconds(
+        [&] {
+          patches = blendC1(g1SphereZone(ShapeFrame{}, 1.0, nonUniform, latitudes), nullptr, options).patches.size();
+        },
+        200);
     std::printf("  %-20s %8.3f ms  (%zu patches, C1 Section 5, basic %s)\n", "non-uniform, C1", 1e3 * c1, patches,
                 quarticInV ? "(4,4)" : "(4,2)");
   }
@@ -57,9 +64,9 @@ int main() {
   Eigen::VectorXd thirds(4), heights(3);
   thirds << 0.0, 2 * pi / 3, 4 * pi / 3, 2 * pi;
   heights << 0.0, 1.0, 2.0;
-  const double steep = medianSeconds([&] {
-    blendShell(blendCone(ShapeFrame{}, 1.0, 1e12, thirds, heights, CircleReparam::Rho, nullptr, true));
-  }, 50);
-  std::printf("  %-20s %8.3f ms  (cone slope 1e12, complex and shell; sewing took 10-16 s)\n", "steep cone", 1e3 * steep);
+  const double steep = medianSeconds(
+      [&] { blendShell(blendCone(ShapeFrame{}, 1.0, 1e12, thirds, heights, CircleReparam::Rho, nullptr, true)); }, 50);
+  std::printf("  %-20s %8.3f ms  (cone slope 1e12, complex and shell; sewing took 10-16 s)\n", "steep cone",
+              1e3 * steep);
   return 0;
 }

@@ -11,15 +11,15 @@
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array1OfPnt.hxx>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <algorithm>
 
-#include "bench_timing.hpp"
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/csr.hpp"
 #include "fairsplines/occt.hpp"
+#include "bench_timing.hpp"
 
 using namespace fairsplines;
 using fairsplines::bench::bestSeconds;
@@ -36,13 +36,12 @@ PointMatrix samples(int n) {
   return q;
 }
 
-
 }  // namespace
 
 int main() {
   std::printf("csr-spline vs GeomAPI_Interpolate, same points, one core (best of several runs)\n");
-  std::printf("%9s %9s %9s %13s %7s %12s %11s %14s %7s %7s\n", "N", "fit [ms]", "fit Mpt/s", "fit+Geom [ms]",
-              "Mpt/s", "via toOcct", "Geom ctor", "OCCT interp", "ratio", "bound");
+  std::printf("%9s %9s %9s %13s %7s %12s %11s %14s %7s %7s\n", "N", "fit [ms]", "fit Mpt/s", "fit+Geom [ms]", "Mpt/s",
+              "via toOcct", "Geom ctor", "OCCT interp", "ratio", "bound");
   for (int n : {1000, 10000, 100000, 1000000}) {
     const PointMatrix q = samples(n);
     const int repeats = n >= 1000000 ? 3 : (n >= 100000 ? 7 : 30);
@@ -62,8 +61,8 @@ int main() {
           poles += g->NbPoles();
         },
         repeats);
-    const double occt = bestSeconds(
-        [&] { poles += classicInterpolation(q, Parametrization::Chordal, false)->NbPoles(); }, repeats);
+    const double occt =
+        bestSeconds([&] { poles += classicInterpolation(q, Parametrization::Chordal, false)->NbPoles(); }, repeats);
     std::printf("%9d %9.3f %9.1f %13.3f %7.1f %12.3f %11.3f %14.3f %6.1fx %6.1fx\n", n, fit * 1e3, n / fit * 1e-6,
                 csr * 1e3, n / csr * 1e-6, twoStep * 1e3, ctor * 1e3, occt * 1e3, occt / csr, occt / ctor);
     if (poles == 0) return 1;

@@ -6,18 +6,18 @@
 #include <GeomConvert.hxx>
 #include <GeomConvert_CompCurveToBSplineCurve.hxx>
 #include <Geom_TrimmedCurve.hxx>
-#include <gp.hxx>
-#include <gp_Ax2.hxx>
-#include <gp_Circ.hxx>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <gp.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Circ.hxx>
 #include <vector>
 
-#include "bench_timing.hpp"
 #include "fairsplines/design.hpp"
 #include "fairsplines/occt.hpp"
+#include "bench_timing.hpp"
 
 using namespace fairsplines;
 using fairsplines::bench::medianSeconds;

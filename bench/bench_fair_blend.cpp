@@ -17,9 +17,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "clothoid_arcs.hpp"
 #include "fairsplines/fair_blend.hpp"
 #include "fairsplines/monotone.hpp"
+#include "clothoid_arcs.hpp"
 
 using namespace fairsplines;
 using Clock = std::chrono::steady_clock;
@@ -156,8 +156,12 @@ int quinticExtrema(const Local& l, double k0, double k1) {
   const Vector2d T0(std::cos(l.theta0), std::sin(l.theta0)), T1(std::cos(l.theta1), std::sin(l.theta1));
   const Vector2d N0(-T0.y(), T0.x()), N1(-T1.y(), T1.x());
   const Vector2d D0 = l.r * T0, D1 = l.r * T1, S0 = l.r * l.r * k0 * N0, S1 = l.r * l.r * k1 * N1;
-  const Vector2d P[6] = {Vector2d(0, 0), D0 / 5.0, 2.0 * D0 / 5.0 + S0 / 20.0,
-                         Vector2d(l.r, 0) - 2.0 * D1 / 5.0 + S1 / 20.0, Vector2d(l.r, 0) - D1 / 5.0, Vector2d(l.r, 0)};
+  const Vector2d P[6] = {Vector2d(0, 0),
+                         D0 / 5.0,
+                         2.0 * D0 / 5.0 + S0 / 20.0,
+                         Vector2d(l.r, 0) - 2.0 * D1 / 5.0 + S1 / 20.0,
+                         Vector2d(l.r, 0) - D1 / 5.0,
+                         Vector2d(l.r, 0)};
   auto kappa = [&](double t) {
     Vector2d d1 = Vector2d::Zero(), d2 = Vector2d::Zero();
     const double b4[5] = {std::pow(1 - t, 4), 4 * t * std::pow(1 - t, 3), 6 * t * t * (1 - t) * (1 - t),
@@ -274,7 +278,7 @@ int main() {
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (computed %.1f%%, meets the ends %.1f%%; curvature sign %+g)\n",
               "OCCT FairCurve_MinimalVariation (G2)", occt2Monotone / 10.0, 1e3 * quantile(occt2, 0.5),
               1e3 * quantile(occt2, 0.99), occt2Computed / 10.0, occt2Matching / 10.0, curvatureSign);
-  std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n",
-              "quintic Bezier matching the end 2-jets", quinticMonotone / 10.0, quinticTotal / 1000.0, quinticMax);
+  std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n", "quintic Bezier matching the end 2-jets",
+              quinticMonotone / 10.0, quinticTotal / 1000.0, quinticMax);
   return 0;
 }

@@ -60,9 +60,10 @@ double median(std::vector<double> v) {
 int main() {
   const int count = 1000;
   const std::vector<test::EndCondition> ends = test::randomAdmissibleEnds(count, 20261124);
-  std::printf("Algorithm 2 on %d random admissible end conditions (random positions, orientations, mirror\n"
-              "images, scales; half in 3D planes), one core, best of 3 runs per condition\n\n",
-              count);
+  std::printf(
+      "Algorithm 2 on %d random admissible end conditions (random positions, orientations, mirror\n"
+      "images, scales; half in 3D planes), one core, best of 3 runs per condition\n\n",
+      count);
   const Run fair = run(ends, MonotoneMethod::Fairest, 3);
   const Run grid = run(ends, MonotoneMethod::PaperGrid, 1);  // milliseconds: one run is enough
   const double tf = median(fair.seconds), tg = median(grid.seconds);
@@ -71,8 +72,10 @@ int main() {
               100.0 * fair.successes / count, median(fair.iterations));
   std::printf("%-27s %12.2f %14.2f %8.1f%% %16.0f\n", "paper's grid (step 0.02)", tg * 1e6, median(grid.solved) * 1e6,
               100.0 * grid.successes / count, median(grid.iterations));
-  std::printf("\n(median [us]: over all %d conditions; median solved: over the ones the method solved;\n"
-              " iterations: Newton steps, or grid points tried)\n", count);
+  std::printf(
+      "\n(median [us]: over all %d conditions; median solved: over the ones the method solved;\n"
+      " iterations: Newton steps, or grid points tried)\n",
+      count);
   std::printf("\nratio of medians (grid / fairest): %.0fx\n", tg / tf);
   int gridOnly = 0;
   std::vector<double> ratios;

@@ -22,8 +22,9 @@ inline Frame basicFrame(FuzzInput& in) {
   if (in.byte() < 64) f.origin = in.vector3();
   if (in.byte() < 200) {
     const double a = in.number(), b = in.number();  // rotation about z, then about x
-    const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(b, Eigen::Vector3d::UnitX()) *
-                                      Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ())).toRotationMatrix();
+    const Eigen::Matrix3d rotation =
+        (Eigen::AngleAxisd(b, Eigen::Vector3d::UnitX()) * Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()))
+            .toRotationMatrix();
     if (rotation.allFinite()) {
       f.x = rotation.col(0);
       f.y = rotation.col(1);
@@ -89,8 +90,10 @@ inline std::unique_ptr<BasicCurve> basicCurve(FuzzInput& in, std::string& kind) 
       note("polynomial coefficients (row k: s^k)", coefficients);
       auto jet = [coefficients](double s, Eigen::Vector3d& p, Eigen::Vector3d& dp, Eigen::Vector3d& d2p) {
         p = coefficients.row(0).transpose() +
-            s * (coefficients.row(1).transpose() + s * (coefficients.row(2).transpose() + s * coefficients.row(3).transpose()));
-        dp = coefficients.row(1).transpose() + s * (2 * coefficients.row(2).transpose() + 3 * s * coefficients.row(3).transpose());
+            s * (coefficients.row(1).transpose() +
+                 s * (coefficients.row(2).transpose() + s * coefficients.row(3).transpose()));
+        dp = coefficients.row(1).transpose() +
+             s * (2 * coefficients.row(2).transpose() + 3 * s * coefficients.row(3).transpose());
         d2p = 2 * coefficients.row(2).transpose() + 6 * s * coefficients.row(3).transpose();
       };
       return std::make_unique<ParametricCurve>(jet, a, b);

@@ -30,13 +30,14 @@ int fuzzOne(FuzzInput& in) {
   double diagonal = 0.0;
   if (guarded(call, [&] { diagonal = curve->size(); }) && !passThrough) requireFinite(call, "size()", diagonal);
   std::optional<HomogeneousBezier> cubic;
-  if (guarded(call, [&] { cubic = curve->homogeneousCubic(); }) && cubic) requireFinite(call, "homogeneousCubic()", *cubic);
+  if (guarded(call, [&] { cubic = curve->homogeneousCubic(); }) && cubic)
+    requireFinite(call, "homogeneousCubic()", *cubic);
 
   const int points = in.count(0, 3);
   for (int k = 0; k < points; ++k) {
     Eigen::Vector3d q;
     switch (in.choice(3)) {
-      case 0:  // on the curve
+      case 0:    // on the curve
       case 1: {  // near it
         const double u = in.unit();
         if (!guarded(call, [&] { q = curve->value(std::clamp(u, 0.0, 1.0)); })) continue;

@@ -16,9 +16,12 @@ namespace {
 
 G2Surface g2SurfaceOf(const ShapeOfRevolution& s) {
   switch (s.kind) {
-    case ShapeOfRevolution::Kind::SphereZone: return sphereZone(s.frame, s.size0, s.around, s.profile);
-    case ShapeOfRevolution::Kind::Cone: return cone(s.frame, s.size0, s.size1, s.around, s.profile);
-    case ShapeOfRevolution::Kind::Torus: break;
+    case ShapeOfRevolution::Kind::SphereZone:
+      return sphereZone(s.frame, s.size0, s.around, s.profile);
+    case ShapeOfRevolution::Kind::Cone:
+      return cone(s.frame, s.size0, s.size1, s.around, s.profile);
+    case ShapeOfRevolution::Kind::Torus:
+      break;
   }
   return torus(s.frame, s.size0, s.size1, s.around, s.profile);
 }
@@ -83,8 +86,9 @@ int fuzzOne(FuzzInput& in) {
       for (int k = 0; k < edits && edited.nu > 0 && edited.nv > 0; ++k) {
         const int I = in.count(0, 255) % edited.nu, J = in.count(0, 255) % edited.nv;
         const int r = in.count(0, 3), s = in.count(0, 3);
-        const Eigen::Vector3d p = Eigen::Vector3d(edited.point(I, J, r, s).head<3>().transpose()) / edited.point(I, J, r, s)[3] +
-                                  in.vector3() * 0.1;
+        const Eigen::Vector3d p =
+            Eigen::Vector3d(edited.point(I, J, r, s).head<3>().transpose()) / edited.point(I, J, r, s)[3] +
+            in.vector3() * 0.1;
         const double weight = in.byte() < 128 ? edited.point(I, J, r, s)[3] : in.positive();
         note("edit I, J, r, s", Eigen::Vector4d(I, J, r, s));
         note("edit point", p);

@@ -11,8 +11,8 @@
 #include <functional>
 #include <map>
 #include <string>
-#include <utility>
 #include <typeinfo>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>

@@ -81,7 +81,8 @@ int fuzzOne(FuzzInput& in) {
     }
     case 2: {
       Handle(Geom_BSplineCurve) c;
-      if (guarded("classicInterpolation", [&] { c = classicInterpolation(q, options.parametrization, options.closed); }))
+      if (guarded("classicInterpolation",
+                  [&] { c = classicInterpolation(q, options.parametrization, options.closed); }))
         requireValid("classicInterpolation", c);
       break;
     }

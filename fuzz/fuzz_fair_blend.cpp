@@ -74,7 +74,8 @@ int fuzzOne(FuzzInput& in) {
   requireFinite(call, "variation", blend.variation);
   for (const SpanCertificate& s : blend.certificate.spans) {
     requireFinite(call, "certificate span range", Eigen::Vector2d(s.u0, s.u1));
-    if (s.trend != CurvatureTrend::Singular) requireFinite(call, "certificate curvature", Eigen::Vector2d(s.kappa0, s.kappa1));
+    if (s.trend != CurvatureTrend::Singular)
+      requireFinite(call, "certificate curvature", Eigen::Vector2d(s.kappa0, s.kappa1));
   }
   if (blend.monotone != blend.certificate.monotone) fail(call, "monotone differs from the certificate's");
   return 0;

@@ -6,18 +6,18 @@
 
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Builder.hxx>
-#include <TopoDS_Compound.hxx>
 #include <Precision.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Shape.hxx>
 #include <cstdint>
 
-#include "bindings.hpp"
-#include "shape_capsule.hpp"
 #include "fairsplines/blend_shapes.hpp"
 #include "fairsplines/blend_surface.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/g2_to_c2.hpp"
 #include "fairsplines/surfaces.hpp"
+#include "bindings.hpp"
+#include "shape_capsule.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -123,39 +123,36 @@ void bindBlend(py::module_& m) {
       .def_readonly("closed_v", &G2Surface::closedV)
       .def("set_control", &G2Surface::setControl, "i"_a, "j"_a, "r"_a, "s"_a, "point"_a, "weight"_a)
       .def(
-          "patch", [](const G2Surface& s, int i, int j) { return fromOcctSurface(patchToOcct(s, i, j)); }, "i"_a, "j"_a);
+          "patch", [](const G2Surface& s, int i, int j) { return fromOcctSurface(patchToOcct(s, i, j)); }, "i"_a,
+          "j"_a);
   m.def(
       "sphere_zone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
-         const Eigen::VectorXd& longitudes, const Eigen::VectorXd& latitudes) {
-        return sphereZone(frameOf(o, x, y), radius, longitudes, latitudes);
-      },
+         const Eigen::VectorXd& longitudes,
+         const Eigen::VectorXd& latitudes) { return sphereZone(frameOf(o, x, y), radius, longitudes, latitudes); },
       "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a,
       "A sphere zone or dome as a G2 rational bicubic surface (eq. (2) both ways): longitudes around the frame's z, "
       "latitudes in [-pi/2, pi/2], increasing.");
   m.def(
       "cylinder",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
-         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
-        return cylinder(frameOf(o, x, y), radius, angles, heights);
-      },
+         const Eigen::VectorXd& angles,
+         const Eigen::VectorXd& heights) { return cylinder(frameOf(o, x, y), radius, angles, heights); },
       "origin"_a, "x"_a, "y"_a, "radius"_a, "angles"_a, "heights"_a,
       "A circular cylinder as a G2 rational bicubic surface: angles around the frame's z, increasing heights.");
   m.def(
       "cone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
-         const Eigen::VectorXd& angles, const Eigen::VectorXd& heights) {
-        return cone(frameOf(o, x, y), radius0, slope, angles, heights);
-      },
+         const Eigen::VectorXd& angles,
+         const Eigen::VectorXd& heights) { return cone(frameOf(o, x, y), radius0, slope, angles, heights); },
       "origin"_a, "x"_a, "y"_a, "radius0"_a, "slope"_a, "angles"_a, "heights"_a,
       "A cone of radius radius0 + slope z as a G2 rational bicubic surface: angles around the frame's z, increasing "
       "heights.");
   m.def(
       "torus",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double R, double r,
-         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV) {
-        return torus(frameOf(o, x, y), R, r, anglesU, anglesV);
-      },
+         const Eigen::VectorXd& anglesU,
+         const Eigen::VectorXd& anglesV) { return torus(frameOf(o, x, y), R, r, anglesU, anglesV); },
       "origin"_a, "x"_a, "y"_a, "major_radius"_a, "minor_radius"_a, "angles_u"_a, "angles_v"_a,
       "A torus (0 < r < R) as a G2 rational bicubic surface: angles_u around the frame's z, angles_v around the "
       "tube (0 = outer equator).");
@@ -204,7 +201,8 @@ void bindBlend(py::module_& m) {
           "tolerance"_a = 1e-9,
           "One Geom_BSplineSurface of the complex, C2 (C1 for the Section 5 complexes), or None where it is not.")
       .def(
-          "roles", [](const BlendComplex& c) {
+          "roles",
+          [](const BlendComplex& c) {
             py::list out;
             for (const TaggedPatch& p : c.patches) out.append(roleOf(p.role));
             return out;
@@ -232,7 +230,8 @@ void bindBlend(py::module_& m) {
               } catch (const InputError&) {
                 // not a C2 (C1) tensor grid (e.g. the naive baseline): no single surface
               }
-              if (!surface.IsNull()) builder.Add(compound, BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face());
+              if (!surface.IsNull())
+                builder.Add(compound, BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face());
             }
             return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(compound)));
           },
@@ -256,8 +255,8 @@ void bindBlend(py::module_& m) {
         return blendSphereZone(frameOf(o, x, y), radius, longitudes, latitudes, methodOf(method), ringOf(ring),
                                bothDirections, interfaceOf(at));
       },
-      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "method"_a = "rho",
-      "ring"_a = py::none(), "both_directions"_a = true, "at"_a = "end",
+      "origin"_a, "x"_a, "y"_a, "radius"_a, "longitudes"_a, "latitudes"_a, "method"_a = "rho", "ring"_a = py::none(),
+      "both_directions"_a = true, "at"_a = "end",
       "Section 4.2: a sphere zone joined to a free-form ring (none: the default ring) by a C2 transition row of "
       "degree (6,5).");
   m.def(
@@ -291,7 +290,8 @@ void bindBlend(py::module_& m) {
         return s;
       },
       "poles"_a, "weights"_a, "knots_u"_a, "knots_v"_a, "mults_u"_a, "mults_v"_a, "degree_u"_a, "degree_v"_a,
-      "periodic_u"_a, "periodic_v"_a, "nu"_a, "nv"_a, "A kernel BSplineSurface from arrays (poles nu*nv x 3, row i*nv+j).");
+      "periodic_u"_a, "periodic_v"_a, "nu"_a, "nv"_a,
+      "A kernel BSplineSurface from arrays (poles nu*nv x 3, row i*nv+j).");
   m.def(
       "blend_cone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius0, double slope,
@@ -338,11 +338,14 @@ void bindBlend(py::module_& m) {
   m.def(
       "blend_edited",
       [](const ShapeOfRevolution& shape, const G2Surface& edited, const std::string& method,
-         const std::optional<BSplineSurface>& ring) { return blendEdited(shape, edited, methodOf(method), ringOf(ring)); },
+         const std::optional<BSplineSurface>& ring) {
+        return blendEdited(shape, edited, methodOf(method), ringOf(ring));
+      },
       "shape"_a, "edited"_a, "method"_a = "rho", "ring"_a = py::none(),
       "An edited G2 control structure of the shape blended into a ring (Figs. 1c/d).");
   m.def(
-      "ring_knots", [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
+      "ring_knots",
+      [](const Eigen::VectorXd& angles, const std::string& method) { return ringKnots(angles, methodOf(method)); },
       "angles"_a, "method"_a = "rho", "The u knots (one period) a free-form ring must have to join a shape.");
 }
 

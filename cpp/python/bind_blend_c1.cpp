@@ -10,10 +10,10 @@
 
 #include <Geom_BSplineSurface.hxx>
 
-#include "bindings.hpp"
 #include "fairsplines/blend_c1.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surfaces.hpp"
+#include "bindings.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

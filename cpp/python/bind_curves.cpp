@@ -7,13 +7,13 @@
 #include <TopoDS_Edge.hxx>
 #include <cstdint>
 
-#include "bindings.hpp"
-#include "shape_capsule.hpp"
 #include "fairsplines/analysis.hpp"
 #include "fairsplines/baselines.hpp"
 #include "fairsplines/bspline.hpp"
 #include "fairsplines/csr.hpp"
 #include "fairsplines/occt.hpp"
+#include "bindings.hpp"
+#include "shape_capsule.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -21,11 +21,12 @@ using namespace pybind11::literals;
 namespace fairsplines::python {
 
 void bindCurves(py::module_& m) {
-  py::class_<BSplineCurve>(m, "BSplineCurve", "A B-spline curve in OpenCASCADE's layout (distinct knots + multiplicities).")
+  py::class_<BSplineCurve>(m, "BSplineCurve",
+                           "A B-spline curve in OpenCASCADE's layout (distinct knots + multiplicities).")
       .def(py::init([](PointMatrix poles, Eigen::VectorXd knots, Eigen::VectorXi mults, int degree, bool periodic,
                        Eigen::VectorXd weights) {
-             return BSplineCurve{degree, std::move(poles), std::move(weights), std::move(knots), std::move(mults),
-                                 periodic};
+             return BSplineCurve{degree,           std::move(poles), std::move(weights),
+                                 std::move(knots), std::move(mults), periodic};
            }),
            "poles"_a, "knots"_a, "mults"_a, "degree"_a, "periodic"_a = false, "weights"_a = Eigen::VectorXd())
       .def_readwrite("degree", &BSplineCurve::degree)
@@ -73,11 +74,14 @@ void bindCurves(py::module_& m) {
       "points"_a, "closed"_a = false, "parametrization"_a = "chordal",
       "Classic C2 cubic interpolation by OCCT's GeomAPI_Interpolate.");
 
-  m.def("parameters", [](PointsRef q, const std::string& kind, bool closed) {
-    validateSamples(q, closed, 2, "parametrization");
-    return parameters(q, parseParametrization(kind), closed);
-  }, "points"_a, "parametrization"_a = "chordal", "closed"_a = false,
-  "The samples' parameters: t_0 = 0, t_{i+1} - t_i = |q_{i+1} - q_i|^a (a = 1 chordal, 1/2 centripetal, 0 uniform).");
+  m.def(
+      "parameters",
+      [](PointsRef q, const std::string& kind, bool closed) {
+        validateSamples(q, closed, 2, "parametrization");
+        return parameters(q, parseParametrization(kind), closed);
+      },
+      "points"_a, "parametrization"_a = "chordal", "closed"_a = false,
+      "The samples' parameters: t_0 = 0, t_{i+1} - t_i = |q_{i+1} - q_i|^a (a = 1 chordal, 1/2 centripetal, 0 uniform).");
   m.def("beta_from_knots", &betaFromKnots, "knots"_a,
         "Eq. (1): beta_i = h_i / h_{i-1} for every knot with both neighbours.");
   m.def(
@@ -89,15 +93,16 @@ void bindCurves(py::module_& m) {
       "control_points"_a, "beta"_a, "Eq. (2): Bezier pieces (4 rows each) and their betas.");
   m.def(
       "de_boor_from_g2",
-      [](const PointMatrix& bezier, const Eigen::VectorXd& beta) { return deBoorFromG2(G2Spline{bezier, beta}); },
+      [](const PointMatrix& bezier, const Eigen::VectorXd& beta) {
+        return deBoorFromG2(G2Spline{bezier, beta});
+      },
       "bezier"_a, "beta"_a, "Eq. (3): de Boor points of a G2 spline.");
 
   m.def(
       "curvature_profile",
       [](const BSplineCurve& curve, int n, int minPerSpan) {
         const CurvatureProfile p = curvatureProfile(toOcct(curve), n, minPerSpan);
-        return py::make_tuple(p.u, p.s, p.kappa, p.isSigned,
-                              Eigen::Vector3d(p.normal.X(), p.normal.Y(), p.normal.Z()));
+        return py::make_tuple(p.u, p.s, p.kappa, p.isSigned, Eigen::Vector3d(p.normal.X(), p.normal.Y(), p.normal.Z()));
       },
       "curve"_a, "n"_a = 512, "min_per_span"_a = 8, "(u, s, kappa, signed, plane normal)");
   m.def(
@@ -119,10 +124,8 @@ void bindCurves(py::module_& m) {
       },
       "curve"_a, "n"_a = 2048, "min_per_span"_a = 16, "[(u, s, kappa, is_maximum)]");
   m.def(
-      "max_distance",
-      [](const BSplineCurve& curve, PointsRef q) { return maxDistanceToPoints(toOcct(curve), q); },
-      "curve"_a, "points"_a,
-      "The largest distance from the points to the curve (by projection).");
+      "max_distance", [](const BSplineCurve& curve, PointsRef q) { return maxDistanceToPoints(toOcct(curve), q); },
+      "curve"_a, "points"_a, "The largest distance from the points to the curve (by projection).");
   m.def(
       "edge_capsule",
       [](const BSplineCurve& curve) {
@@ -144,8 +147,7 @@ void bindCurves(py::module_& m) {
       "rule"_a = EpsilonRule::CaseDistinction, "parameters"_a = Eigen::VectorXd(),
       "A capsule owning a new TopoDS_Edge of the csr-spline, for occ_bridge.adopt_shape (kernel.adopt).");
   m.def(
-      "to_brep",
-      [](const BSplineCurve& curve) { return py::bytes(toBrepString(toOcct(curve))); }, "curve"_a,
+      "to_brep", [](const BSplineCurve& curve) { return py::bytes(toBrepString(toOcct(curve))); }, "curve"_a,
       "The curve as BRep edge text with 17 significant digits (exact).");
 }
 

@@ -10,13 +10,13 @@
 #include <TopoDS_Face.hxx>
 #include <cstdint>
 
-#include "bindings.hpp"
-#include "shape_capsule.hpp"
 #include "fairsplines/basic_curves.hpp"
 #include "fairsplines/design.hpp"
 #include "fairsplines/design_samples.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surfaces.hpp"
+#include "bindings.hpp"
+#include "shape_capsule.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -62,8 +62,7 @@ void bindDesign(py::module_& m) {
            }),
            "jet"_a, "s0"_a, "s1"_a);
 
-  m.def("line_segment", &lineSegment, "p0"_a, "p1"_a,
-        "The line segment from p0 to p1 (degree 1, weights 1).");
+  m.def("line_segment", &lineSegment, "p0"_a, "p1"_a, "The line segment from p0 to p1 (degree 1, weights 1).");
   m.def(
       "ellipse_arc",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double b, double start,
@@ -91,8 +90,9 @@ void bindDesign(py::module_& m) {
       "Section 5).");
   m.def(
       "circle_involute",
-      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double r, double t0,
-         double t1) { return circleInvolute(frameOf(o, x, y), r, t0, t1); },
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double r, double t0, double t1) {
+        return circleInvolute(frameOf(o, x, y), r, t0, t1);
+      },
       "origin"_a, "x"_a, "y"_a, "r"_a, "t0"_a, "t1"_a,
       "The involute r (cos t + t sin t, sin t - t cos t) of the circle of radius r in the frame, t from t0 to t1.");
 
@@ -124,7 +124,8 @@ void bindDesign(py::module_& m) {
       [](const std::vector<PiecePolygon>& pieces, double joinTolerance) {
         const Design d = mergePieces(pieces, joinTolerance);
         py::list joins, ranges;
-        for (JoinKind j : d.joins) joins.append(j == JoinKind::Agree ? "agree" : j == JoinKind::Averaged ? "averaged" : "edge");
+        for (JoinKind j : d.joins)
+          joins.append(j == JoinKind::Agree ? "agree" : j == JoinKind::Averaged ? "averaged" : "edge");
         for (const PieceRange& r : d.ranges) ranges.append(py::make_tuple(r.t0, r.scale));
         return py::make_tuple(d.curve, joins, ranges);
       },
@@ -149,11 +150,10 @@ void bindDesign(py::module_& m) {
   m.def(
       "face_capsule",
       [](const BSplineSurface& surface) {
-        return py::reinterpret_steal<py::object>(newShapeCapsule(
-            new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face())));
+        return py::reinterpret_steal<py::object>(
+            newShapeCapsule(new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face())));
       },
-      "surface"_a,
-      "A capsule owning a new TopoDS_Face of the surface, for occ_bridge.adopt_shape (kernel.adopt).");
+      "surface"_a, "A capsule owning a new TopoDS_Face of the surface, for occ_bridge.adopt_shape (kernel.adopt).");
 }
 
 }  // namespace fairsplines::python

@@ -6,8 +6,8 @@
 
 #include <limits>
 
-#include "bindings.hpp"
 #include "fairsplines/fair_blend.hpp"
+#include "bindings.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -21,9 +21,9 @@ void bindFairBlend(py::module_& m) {
          double k0, double k1, const Eigen::Vector3d& normal) {
         const FairBlend b = fairBlend(BlendEnds{p0, t0, p1, t1, k0, k1, normal});
         return py::dict("curve"_a = b.curve, "certificate"_a = certificateDict(b.certificate),
-                        "monotone"_a = b.monotone, "normal"_a = b.normal, "kappa0"_a = b.kappa0,
-                        "kappa1"_a = b.kappa1, "turning"_a = b.turning, "length"_a = b.length,
-                        "variation"_a = b.variation, "spans"_a = b.spans, "reason"_a = b.reason);
+                        "monotone"_a = b.monotone, "normal"_a = b.normal, "kappa0"_a = b.kappa0, "kappa1"_a = b.kappa1,
+                        "turning"_a = b.turning, "length"_a = b.length, "variation"_a = b.variation,
+                        "spans"_a = b.spans, "reason"_a = b.reason);
       },
       "p0"_a, "t0"_a, "p1"_a, "t1"_a, "k0"_a = std::numeric_limits<double>::quiet_NaN(),
       "k1"_a = std::numeric_limits<double>::quiet_NaN(), "normal"_a = Eigen::Vector3d::Zero(),

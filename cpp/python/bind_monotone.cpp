@@ -4,8 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "bindings.hpp"
 #include "fairsplines/monotone.hpp"
+#include "bindings.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -22,12 +22,18 @@ MonotoneMethod parseMethod(const std::string& name) {
 
 const char* trendName(CurvatureTrend trend) {
   switch (trend) {
-    case CurvatureTrend::Increasing: return "increasing";
-    case CurvatureTrend::Decreasing: return "decreasing";
-    case CurvatureTrend::Constant: return "constant";
-    case CurvatureTrend::Extremum: return "extremum";
-    case CurvatureTrend::Singular: return "singular";
-    case CurvatureTrend::Undecided: break;
+    case CurvatureTrend::Increasing:
+      return "increasing";
+    case CurvatureTrend::Decreasing:
+      return "decreasing";
+    case CurvatureTrend::Constant:
+      return "constant";
+    case CurvatureTrend::Extremum:
+      return "extremum";
+    case CurvatureTrend::Singular:
+      return "singular";
+    case CurvatureTrend::Undecided:
+      break;
   }
   return "undecided";
 }

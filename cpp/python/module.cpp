@@ -4,8 +4,8 @@
 
 #include <Standard_Failure.hxx>
 
-#include "bindings.hpp"
 #include "fairsplines/errors.hpp"
+#include "bindings.hpp"
 
 namespace py = pybind11;
 

@@ -29,10 +29,9 @@ inline PyObject* newShapeCapsule(TopoDS_Shape* shape) {
 /// TypeError set) for anything else: another object, or a capsule adopted already.
 inline TopoDS_Shape* adoptShapeCapsule(PyObject* capsule) {
   if (!PyCapsule_IsValid(capsule, kShapeCapsule)) {
-    PyErr_SetString(PyExc_TypeError,
-                    PyCapsule_IsValid(capsule, kAdoptedCapsule)
-                        ? "this shape was adopted already: a capsule hands its shape over once"
-                        : "adopt_shape takes a shape capsule made by freecad_workbench._kernel");
+    PyErr_SetString(PyExc_TypeError, PyCapsule_IsValid(capsule, kAdoptedCapsule)
+                                         ? "this shape was adopted already: a capsule hands its shape over once"
+                                         : "adopt_shape takes a shape capsule made by freecad_workbench._kernel");
     return nullptr;
   }
   auto* shape = static_cast<TopoDS_Shape*>(PyCapsule_GetPointer(capsule, kShapeCapsule));

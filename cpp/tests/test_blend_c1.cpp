@@ -12,9 +12,9 @@
 #include <map>
 #include <string>
 
-#include "blend_test_support.hpp"
 #include "fairsplines/blend_c1.hpp"
 #include "fairsplines/errors.hpp"
+#include "blend_test_support.hpp"
 
 using namespace fairsplines;
 using namespace fairsplines::test::blend;
@@ -22,12 +22,12 @@ using namespace fairsplines::test::blend;
 namespace {
 
 struct C1Seams {
-  double alongU = 0.0;             ///< between neighbouring patches in u (closing seam included)
-  double basicTransition = 0.0;    ///< basic | lower strip row
-  double centre = 0.0;             ///< lower | upper strip row (the centre line)
-  double transitionFree = 0.0;     ///< upper strip row | ring
-  double insideV = 0.0;            ///< inside the ring, and inside the basic rows where they are C1 across
-  std::vector<double> alongURow;   ///< per row of the complex
+  double alongU = 0.0;            ///< between neighbouring patches in u (closing seam included)
+  double basicTransition = 0.0;   ///< basic | lower strip row
+  double centre = 0.0;            ///< lower | upper strip row (the centre line)
+  double transitionFree = 0.0;    ///< upper strip row | ring
+  double insideV = 0.0;           ///< inside the ring, and inside the basic rows where they are C1 across
+  std::vector<double> alongURow;  ///< per row of the complex
   double worst() const { return std::max({alongU, basicTransition, centre, transitionFree, insideV}); }
 };
 
@@ -69,10 +69,10 @@ C1Seams c1Seams(const BlendComplex& c, const Eigen::VectorXd* knotsU = nullptr) 
       report.alongU = std::max(report.alongU, report.alongURow[v]);
       if (v == 0 || (v < c.rowsBasic && !c.basicC2InV)) continue;
       const double beta = (c.knotsV[v + 1] - c.knotsV[v]) / (c.knotsV[v] - c.knotsV[v - 1]);
-      double& bucket = v == c.rowsBasic           ? report.basicTransition
-                       : v == c.rowsBasic + 1     ? report.centre
-                       : v == c.rowsBasic + 2     ? report.transitionFree
-                                                  : report.insideV;
+      double& bucket = v == c.rowsBasic       ? report.basicTransition
+                       : v == c.rowsBasic + 1 ? report.centre
+                       : v == c.rowsBasic + 2 ? report.transitionFree
+                                              : report.insideV;
       compare(at.at({k, v - 1}), at.at({k, v}), false, beta, bucket);
     }
   }
@@ -237,9 +237,9 @@ TEST(C1Blend, EightByFourZoneWithItsRing) {
   // The benchmark's configuration: 8 x 4 patches plus the default ring.
   C1BlendOptions o;
   o.quarticInV = true;
-  const BlendComplex c = blendC1(g1SphereZone(tilted(), 1.0, Eigen::VectorXd::LinSpaced(9, 0.0, 2 * kPi),
-                                              vec({-0.8, -0.3, 0.1, 0.5, 0.9})),
-                                 nullptr, o);
+  const BlendComplex c = blendC1(
+      g1SphereZone(tilted(), 1.0, Eigen::VectorXd::LinSpaced(9, 0.0, 2 * kPi), vec({-0.8, -0.3, 0.1, 0.5, 0.9})),
+      nullptr, o);
   EXPECT_LT(c1Seams(c).worst(), 1e-8);
   EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
 }
@@ -327,20 +327,26 @@ TEST(C1Blend, BadInputRaisesInputErrorNamingTheProblem) {
     return message.find(part) != std::string::npos;
   };
   // An arc of pi or more (arc 1 opens 3.5).
-  EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, 1.0, vec({0.0, 1.0, 4.5, 2 * kPi}), kLatitudes); }),
+  EXPECT_TRUE(has(inputErrorOf([&] {
+                    g1SphereZone(f, 1.0, vec({0.0, 1.0, 4.5, 2 * kPi}), kLatitudes);
+                  }),
                   "longitude arc 1"));
-  EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, 1.0, nonUniformTurn(), vec({-kPi / 2, kPi / 2})); }), "latitude arc 0"));
+  EXPECT_TRUE(has(inputErrorOf([&] {
+                    g1SphereZone(f, 1.0, nonUniformTurn(), vec({-kPi / 2, kPi / 2}));
+                  }),
+                  "latitude arc 0"));
   // Not a full turn.
   EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1Cone(f, 1.0, 0.0, vec({0.0, 1.0, 2.0}), kHeights)); }), "full turn"));
   // The interface at a pole.
-  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), vec({0.0, kPi / 2}))); }),
-                  "pole"));
+  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), vec({0.0, kPi / 2}))); }), "pole"));
   // Non-positive radii.
   EXPECT_TRUE(has(inputErrorOf([&] { g1SphereZone(f, -1.0, nonUniformTurn(), kLatitudes); }), "positive radius"));
   EXPECT_TRUE(has(inputErrorOf([&] { g1Torus(f, 3.0, 0.0, nonUniformTurn(), kTube); }), "0 < r < R"));
   EXPECT_TRUE(has(inputErrorOf([&] { g1Cone(f, 1.0, -1.0, nonUniformTurn(), kHeights); }), "is not positive"));
   // A closed tube has no boundary.
-  EXPECT_TRUE(has(inputErrorOf([&] { g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi})); }),
+  EXPECT_TRUE(has(inputErrorOf([&] {
+                    g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({0.0, 2.0, 4.0, 2 * kPi}));
+                  }),
                   "closed profile"));
   // Rings that do not match the interface: turning the other way around the axis; a
   // bicubic net; a ring open in u.
@@ -366,8 +372,8 @@ TEST(C1Join, TwoDifferentlyPartitionedToriJoinC1AndStayExact) {
   // around the axis (beta^a != beta^b) and across the tube.
   const ShapeFrame f = tilted();
   const G1RevolvedShape a = g1Torus(f, 3.0, 1.0, nonUniformTurn(), vec({-1.4, -1.0, -0.3}));
-  const G1RevolvedShape b = g1Torus(f, 3.0, 1.0, vec({0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * kPi}),
-                                    vec({0.2, 0.5, 1.3, 1.6}));
+  const G1RevolvedShape b =
+      g1Torus(f, 3.0, 1.0, vec({0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * kPi}), vec({0.2, 0.5, 1.3, 1.6}));
   const BlendComplex c = joinShapesC1(a, b);
   EXPECT_EQ(c.smoothness, 1);
   EXPECT_EQ(c.piecesU, 14);

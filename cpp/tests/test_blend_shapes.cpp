@@ -7,8 +7,8 @@
 #include <functional>
 
 #include "fairsplines/blend_shapes.hpp"
-#include "blend_test_support.hpp"
 #include "fairsplines/errors.hpp"
+#include "blend_test_support.hpp"
 
 using namespace fairsplines;
 using namespace fairsplines::test::blend;
@@ -67,8 +67,10 @@ double worstSeamDefect(const G2Surface& s) {
   };
   for (int I = 0; I < s.nu; ++I) {
     for (int J = 0; J < s.nv; ++J) {
-      if (I > 0 || s.closedU) check(patchToOcct(s, (I + s.nu - 1) % s.nu, J), patchToOcct(s, I, J), true, s.betaU[I], s.gammaU[I]);
-      if (J > 0 || s.closedV) check(patchToOcct(s, I, (J + s.nv - 1) % s.nv), patchToOcct(s, I, J), false, s.betaV[J], s.gammaV[J]);
+      if (I > 0 || s.closedU)
+        check(patchToOcct(s, (I + s.nu - 1) % s.nu, J), patchToOcct(s, I, J), true, s.betaU[I], s.gammaU[I]);
+      if (J > 0 || s.closedV)
+        check(patchToOcct(s, I, (J + s.nv - 1) % s.nv), patchToOcct(s, I, J), false, s.betaV[J], s.gammaV[J]);
     }
   }
   return worst;
@@ -110,7 +112,11 @@ TEST(BasicShapes, SphereDomeWithPoleLiesOnTheSphereAndJoinsG2) {
 TEST(BasicShapes, CylinderAndConeLieOnTheirSurfacesAndJoinG2) {
   const ShapeFrame f = tilted();
   const G2Surface cyl = cylinder(f, 3.0, vec({0.2, 1.0, 1.3, 2.9}), vec({-1.0, 0.5, 0.7, 4.0}));
-  EXPECT_LT(worstDistance(cyl, [&](const gp_Pnt& p) { const auto q = local(f, p); return std::hypot(q.x(), q.y()) - 3.0; }),
+  EXPECT_LT(worstDistance(cyl,
+                          [&](const gp_Pnt& p) {
+                            const auto q = local(f, p);
+                            return std::hypot(q.x(), q.y()) - 3.0;
+                          }),
             1e-10 * 3.0);
   EXPECT_LT(worstSeamDefect(cyl), 1e-10);
   const G2Surface con = cone(f, 2.0, -0.3, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 4.0}));
@@ -156,19 +162,28 @@ TEST(BasicShapes, BadPartitionsRaiseInputErrorWithTheReason) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message([] { g2Circle(vec({0.0, 1.0, 1.0, 2.0})); }).find("angles must increase: angle 2"), std::string::npos);
+  EXPECT_NE(message([] {
+              g2Circle(vec({0.0, 1.0, 1.0, 2.0}));
+            }).find("angles must increase: angle 2"),
+            std::string::npos);
   EXPECT_NE(message([] { g2Circle(vec({0.0, 2.0, 1.5})); }).find("angles must increase"), std::string::npos);
   // An arc of 4 pi / 3 leaves w = 1/3 + 2/3 cos(alpha/2) = 0.
   EXPECT_NE(message([] { g2Circle(vec({0.0, 4 * kPi / 3, 2 * kPi})); }).find("positive weight"), std::string::npos);
   EXPECT_NE(message([] { g2Circle(vec({0.0, 4.3, 6.0})); }).find("positive weight"), std::string::npos);
   EXPECT_NE(message([] { g2Circle(vec({0.0, 3.0, 6.0, 7.0})); }).find("full turn"), std::string::npos);
-  EXPECT_NE(message([] { sphereZone(ShapeFrame{}, 1.0, nonUniformTurn(), vec({0.0, 2.0})); }).find("latitudes"),
+  EXPECT_NE(message([] {
+              sphereZone(ShapeFrame{}, 1.0, nonUniformTurn(), vec({0.0, 2.0}));
+            }).find("latitudes"),
             std::string::npos);
-  EXPECT_NE(message([] { cone(ShapeFrame{}, 1.0, -1.0, nonUniformTurn(), vec({0.0, 2.0})); }).find("not positive"),
+  EXPECT_NE(message([] {
+              cone(ShapeFrame{}, 1.0, -1.0, nonUniformTurn(), vec({0.0, 2.0}));
+            }).find("not positive"),
             std::string::npos);
   EXPECT_NE(message([] { torus(ShapeFrame{}, 1.0, 2.0, nonUniformTurn(), nonUniformTurn()); }).find("0 < r < R"),
             std::string::npos);
-  EXPECT_NE(message([] { cylinder(ShapeFrame{}, 1.0, nonUniformTurn(), vec({0.0, 0.0})); }).find("heights must increase"),
+  EXPECT_NE(message([] {
+              cylinder(ShapeFrame{}, 1.0, nonUniformTurn(), vec({0.0, 0.0}));
+            }).find("heights must increase"),
             std::string::npos);
 }
 

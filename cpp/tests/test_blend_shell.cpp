@@ -20,10 +20,10 @@
 #include <chrono>
 #include <string>
 
-#include "blend_test_support.hpp"
 #include "fairsplines/blend_c1.hpp"
 #include "fairsplines/blend_surface.hpp"
 #include "fairsplines/errors.hpp"
+#include "blend_test_support.hpp"
 
 using namespace fairsplines;
 using namespace fairsplines::test::blend;

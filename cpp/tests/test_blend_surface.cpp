@@ -2,17 +2,17 @@
 // baseline of Fig. 2a; judged by OCCT evaluation of the returned patches.
 #include <gtest/gtest.h>
 
-#include <Geom_BSplineSurface.hxx>
-#include <cmath>
 #include <BRepCheck_Analyzer.hxx>
 #include <GeomAbs_Shape.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <cmath>
 #include <map>
 
 #include "fairsplines/blend_surface.hpp"
-#include "blend_test_support.hpp"
 #include "fairsplines/errors.hpp"
+#include "blend_test_support.hpp"
 
 using namespace fairsplines;
 using namespace fairsplines::test::blend;
@@ -22,8 +22,8 @@ namespace {
 Eigen::VectorXd uniformTurn(int n) { return Eigen::VectorXd::LinSpaced(n + 1, 0.0, 2 * kPi); }
 
 struct SeamReport {
-  double worst = 0.0;       ///< largest relative jump over every seam
-  double worstAlongU = 0.0; ///< over the seams between neighbouring patches in u
+  double worst = 0.0;        ///< largest relative jump over every seam
+  double worstAlongU = 0.0;  ///< over the seams between neighbouring patches in u
   double worstAcrossV = 0.0;
   std::vector<double> alongU;  ///< per row of the complex
 };
@@ -50,9 +50,11 @@ SeamReport seams(const BlendComplex& c) {
         left->D2(t, 1.0, pl, lv, lu, lvv, luu, luv);
         right->D2(t, 0.0, pr, rv, ru, rvv, ruu, ruv);
       }
-      const double scale = std::max({lu.Magnitude(), lv.Magnitude(), luu.Magnitude(), lvv.Magnitude(), luv.Magnitude()});
-      const double jumps[6] = {pl.Distance(pr), (ru - beta * lu).Magnitude(), (ruu - beta * beta * luu).Magnitude(),
-                               (rv - lv).Magnitude(), (rvv - lvv).Magnitude(), (ruv - beta * luv).Magnitude()};
+      const double scale =
+          std::max({lu.Magnitude(), lv.Magnitude(), luu.Magnitude(), lvv.Magnitude(), luv.Magnitude()});
+      const double jumps[6] = {
+          pl.Distance(pr),       (ru - beta * lu).Magnitude(), (ruu - beta * beta * luu).Magnitude(),
+          (rv - lv).Magnitude(), (rvv - lvv).Magnitude(),      (ruv - beta * luv).Magnitude()};
       for (double j : jumps) {
         bucket = std::max(bucket, j / scale);
         report.worst = std::max(report.worst, j / scale);
@@ -112,8 +114,8 @@ TEST(SphereBlend, RhoComplexIsC2AcrossEverySeamAndTheSphereStaysExact) {
 TEST(SphereBlend, SigmaAndMixedComplexesAreC2Too) {
   const ShapeFrame f = tilted();
   for (CircleReparam method : {CircleReparam::Sigma, CircleReparam::Mixed}) {
-    const BlendComplex c =
-        blendSphereZone(f, 1.0, vec({0.0, 0.5, 1.0, 1.5, 2.0, 2.9, 3.3, 4.6, 5.5, 2 * kPi}), vec({-0.2, 0.3, 0.7}), method);
+    const BlendComplex c = blendSphereZone(f, 1.0, vec({0.0, 0.5, 1.0, 1.5, 2.0, 2.9, 3.3, 4.6, 5.5, 2 * kPi}),
+                                           vec({-0.2, 0.3, 0.7}), method);
     EXPECT_LT(offSphere(c, f, 1.0), 1e-10);
     EXPECT_LT(seams(c).worst, 1e-8);
   }
@@ -129,9 +131,9 @@ TEST(SphereBlend, NaiveBaselineFailsTheSameCheckOnNonUniformPartitions) {
   const BlendComplex c = blendSphereZoneNaive(tilted(), 1.0, nonUniformTurn(), vec({-0.6, 0.1, 0.5, 0.8}));
   // The naive strip is (3,5) over the arcs: its rows from the G2 sphere are not C2 along u.
   const SeamReport r = seams(c);
-  EXPECT_LT(r.worstAcrossV, 1e-8);                 // Hermite data do match across the strip's two seams
-  EXPECT_GT(r.alongU[c.rowsBasic], 1e-3);          // but the strip itself is not C2 along u
-  EXPECT_LT(r.alongU[c.rowsBasic + 1], 1e-8);      // (the ring is)
+  EXPECT_LT(r.worstAcrossV, 1e-8);             // Hermite data do match across the strip's two seams
+  EXPECT_GT(r.alongU[c.rowsBasic], 1e-3);      // but the strip itself is not C2 along u
+  EXPECT_LT(r.alongU[c.rowsBasic + 1], 1e-8);  // (the ring is)
 }
 
 TEST(SphereBlend, RingOnOtherKnotsSharesTheParameterizationAndBlendsC2) {
@@ -185,7 +187,7 @@ TEST(SphereBlend, RingThatDoesNotMatchTheInterfaceRaisesInputError) {
   open->SetUNotPeriodic();
   expectMismatch(open, "periodic");
   EXPECT_THROW(blendSphereZone(f, 1.0, vec({0.0, 3.0, 6.0, 6.5}), lat), InputError);  // more than a full turn
-  EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);                    // top at the pole
+  EXPECT_THROW(blendSphereZone(f, 1.0, lon, vec({0.0, kPi / 2})), InputError);        // top at the pole
 }
 
 TEST(SphereBlend, BothDirectionsC2GiveOneC2Surface) {
@@ -248,12 +250,13 @@ TEST(ConeBlend, CylinderAndConeComplexesAreC2AndStayExact) {
   const ShapeFrame f = tilted();
   for (double slope : {0.0, -0.3, 0.4}) {
     for (bool both : {false, true}) {
-      const BlendComplex c = blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}), CircleReparam::Rho,
-                                       nullptr, both);
-      EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
-                  const auto l = localOf(f, q);
-                  return (std::hypot(l.x(), l.y()) - (2.0 + slope * l.z())) / std::sqrt(1 + slope * slope);
-                }),
+      const BlendComplex c =
+          blendCone(f, 2.0, slope, nonUniformTurn(), vec({-1.0, 0.5, 0.7, 2.0}), CircleReparam::Rho, nullptr, both);
+      EXPECT_LT(offShape(c,
+                         [&](const gp_Pnt& q) {
+                           const auto l = localOf(f, q);
+                           return (std::hypot(l.x(), l.y()) - (2.0 + slope * l.z())) / std::sqrt(1 + slope * slope);
+                         }),
                 1e-10 * 4);
       EXPECT_LT(seams(c).worst, 1e-8) << slope << " " << both;
       if (both) {
@@ -271,10 +274,11 @@ TEST(TorusBlend, TorusZoneComplexIsC2AndStaysExact) {
   const Eigen::VectorXd tube = vec({-1.0, -0.2, 0.4, 0.9});
   for (CircleReparam method : {CircleReparam::Rho, CircleReparam::Sigma}) {
     const BlendComplex c = blendTorus(f, 3.0, 1.0, nonUniformTurn(), tube, method, nullptr, true);
-    EXPECT_LT(offShape(c, [&](const gp_Pnt& q) {
-                const auto l = localOf(f, q);
-                return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
-              }),
+    EXPECT_LT(offShape(c,
+                       [&](const gp_Pnt& q) {
+                         const auto l = localOf(f, q);
+                         return std::hypot(std::hypot(l.x(), l.y()) - 3.0, l.z()) - 1.0;
+                       }),
               1e-10 * 4);
     EXPECT_LT(seams(c).worst, 1e-8);
     EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
@@ -342,8 +346,8 @@ TEST(JoinShapes, TwoDifferentlyPartitionedConesJoinC2AndStayExact) {
   }
   // Mixed with a uniform run on one side only: rho (three pieces an arc) there, sigma (one)
   // on the other side, so those arcs are cut into thirds on the other side.
-  const ShapeOfRevolution runs = coneShape(f, 2.0, 0.3, vec({0.0, 0.5, 1.0, 1.5, 2.9, 3.5, 4.6, 2 * kPi}),
-                                           vec({-2.0, -1.2, 0.0}));
+  const ShapeOfRevolution runs =
+      coneShape(f, 2.0, 0.3, vec({0.0, 0.5, 1.0, 1.5, 2.9, 3.5, 4.6, 2 * kPi}), vec({-2.0, -1.2, 0.0}));
   const BlendComplex mixed = joinShapes(runs, upper, CircleReparam::Mixed);
   EXPECT_GT(mixed.piecesU, 7);
   EXPECT_LT(mixed.piecesU, 21);
@@ -393,11 +397,10 @@ TEST(JoinShapes, CylinderIntoASphericalDome) {
   dome.profile = vec({0.2, 0.9, kPi / 2});
   const BlendComplex c = joinShapes(cylinderShape, dome);
   EXPECT_LT(offSide(c, false, [&](const gp_Pnt& q) { return offCone(f, 1.0, 0.0, q); }), 1e-10);
-  EXPECT_LT(offSide(c, true,
-                    [&](const gp_Pnt& q) {
-                      return (Eigen::Vector3d(q.X(), q.Y(), q.Z()) - domeFrame.origin).norm() - 1.0;
-                    }),
-            1e-10);
+  EXPECT_LT(
+      offSide(c, true,
+              [&](const gp_Pnt& q) { return (Eigen::Vector3d(q.X(), q.Y(), q.Z()) - domeFrame.origin).norm() - 1.0; }),
+      1e-10);
   EXPECT_LT(seams(c).worst, 1e-8);
   EXPECT_EQ(singleSurface(c)->Continuity(), GeomAbs_C2);
   // The dome cannot be the first shape: its end is the pole.
@@ -414,7 +417,7 @@ TEST(JoinShapes, BadInputRaisesInputError) {
     EXPECT_NE(std::string(e.what()).find("same number of arcs"), std::string::npos) << e.what();
   }
   EXPECT_THROW(joinShapes(a, coneShape(f, 2.0, 0.0, vec({0.0, 1.0, 2.0}), vec({2.0, 3.0}))), InputError);  // not a turn
-  EXPECT_THROW(joinShapes(a, coneShape(f, 2.0, 0.0, nonUniformTurn(), vec({3.0, 2.0}))), InputError);  // heights
+  EXPECT_THROW(joinShapes(a, coneShape(f, 2.0, 0.0, nonUniformTurn(), vec({3.0, 2.0}))), InputError);      // heights
 }
 
 TEST(RefineArcs, CuttingArcsIntoThirdsKeepsTheCurveAndItsC2Knots) {
@@ -512,8 +515,10 @@ TEST(EditedBlend, MovedControlPointIsJoinedC2AndArcsAwayFromItStayOnTheSphere) {
       for (int b = 0; b <= 8; ++b) {
         const gp_Pnt q = s->Value(a / 8.0, b / 8.0);
         const double d = std::abs((Eigen::Vector3d(q.X(), q.Y(), q.Z()) - f.origin).norm() - 1.0);
-        if (arc >= 1 && arc <= 3) edited = std::max(edited, d);
-        else away = std::max(away, d);
+        if (arc >= 1 && arc <= 3)
+          edited = std::max(edited, d);
+        else
+          away = std::max(away, d);
       }
     }
   }
@@ -545,8 +550,8 @@ TEST(PartialTurn, OpenSphereZoneAndConesBlendC2WithDefaultAndUserRings) {
   Handle(Geom_BSplineSurface) reversed = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
   reversed->UReverse();
   EXPECT_THROW(blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, reversed), InputError);
-  EXPECT_THROW(blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho, defaultSphereRing(f, 1.0, nonUniformTurn(), lat,
-                                                                                      ringKnots(nonUniformTurn()))),
+  EXPECT_THROW(blendSphereZone(f, 1.0, lon, lat, CircleReparam::Rho,
+                               defaultSphereRing(f, 1.0, nonUniformTurn(), lat, ringKnots(nonUniformTurn()))),
                InputError);  // a periodic ring for a partial turn
   // The naive baseline works open too and still fails the check on the strip.
   const BlendComplex naive = blendSphereZoneNaive(f, 1.0, lon, lat);
@@ -580,7 +585,8 @@ TEST(EditedBlend, PartialTurnEditedStructureIsC2) {
     if (patch.role != TaggedPatch::Role::Basic || patch.uPiece != c.piecesU - 1) continue;
     const Handle(Geom_BSplineSurface) s = patchToOcct(patch);
     for (int a = 0; a <= 8; ++a) {
-      for (int b = 0; b <= 8; ++b) worst = std::max(worst, std::abs(localOf(f, s->Value(a / 8.0, b / 8.0)).norm() - 1.0));
+      for (int b = 0; b <= 8; ++b)
+        worst = std::max(worst, std::abs(localOf(f, s->Value(a / 8.0, b / 8.0)).norm() - 1.0));
     }
   }
   EXPECT_LT(worst, 1e-10);

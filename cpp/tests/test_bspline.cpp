@@ -16,8 +16,8 @@ using namespace fairsplines;
 namespace {
 
 struct RandomSpline {
-  PointMatrix c;      // c_0..c_K
-  Eigen::VectorXd t;  // t_{-2}..t_{K+2}: c_i has support [t_{i-2}, t_{i+2}]
+  PointMatrix c;         // c_0..c_K
+  Eigen::VectorXd t;     // t_{-2}..t_{K+2}: c_i has support [t_{i-2}, t_{i+2}]
   Eigen::VectorXd beta;  // beta_0..beta_K
 };
 
@@ -32,7 +32,7 @@ RandomSpline randomSpline(int K, unsigned seed) {
   for (int i = 1; i < K + 5; ++i) s.t[i] = s.t[i - 1] + 0.1 + 3.0 * unit(rng);  // strongly non-uniform
   s.beta.resize(K + 1);
   for (int i = 0; i <= K; ++i) {
-    const int j = i + 2;  // index of t_i in s.t
+    const int j = i + 2;                                        // index of t_i in s.t
     s.beta[i] = (s.t[j + 1] - s.t[j]) / (s.t[j] - s.t[j - 1]);  // eq. (1)
   }
   return s;
@@ -65,7 +65,8 @@ TEST(G2Form, BezierPiecesMatchOcctEvaluation) {
       const double B[4] = {std::pow(1 - x, 3), 3 * x * std::pow(1 - x, 2), 3 * x * x * (1 - x), x * x * x};
       for (int j = 0; j < 4; ++j) bez += B[j] * g2.bezier.row(4 * k + j);
       const gp_Pnt p = occt->Value(a + x * (b - a));
-      EXPECT_NEAR((bez - Eigen::RowVector3d(p.X(), p.Y(), p.Z())).norm(), 0.0, 1e-12 * 10) << "piece " << k << " x " << x;
+      EXPECT_NEAR((bez - Eigen::RowVector3d(p.X(), p.Y(), p.Z())).norm(), 0.0, 1e-12 * 10)
+          << "piece " << k << " x " << x;
     }
   }
 }
@@ -85,7 +86,8 @@ TEST(G2Form, BothFormsOfEq3Agree) {
   const G2Spline g2 = g2FromDeBoor(s.c, s.beta);
   for (int k = 1; k < g2.pieces(); ++k) {
     const double beta = g2.beta[k];
-    const Eigen::RowVectorXd left = -beta * g2.bezier.row(4 * (k - 1) + 1) + (1 + beta) * g2.bezier.row(4 * (k - 1) + 2);
+    const Eigen::RowVectorXd left =
+        -beta * g2.bezier.row(4 * (k - 1) + 1) + (1 + beta) * g2.bezier.row(4 * (k - 1) + 2);
     const Eigen::RowVectorXd right = (1 + 1 / beta) * g2.bezier.row(4 * k + 1) - (1 / beta) * g2.bezier.row(4 * k + 2);
     EXPECT_LT((left - right).norm(), 1e-11);
   }

@@ -320,11 +320,11 @@ TEST(Csr, StreamingAndVectorisedStrategiesAgree) {
         const Eigen::VectorXd t = parameters(info.chords, Parametrization::Chordal);
         for (EpsilonRule rule : {EpsilonRule::CaseDistinction, EpsilonRule::Additive}) {
           for (bool quasi : {false, true}) {
-            const BSplineCurve a = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
-                                                    detail::CsrStrategy::Streaming);
+            const BSplineCurve a =
+                detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi, detail::CsrStrategy::Streaming);
             for (Eigen::Index window : {8, 13, 4096}) {  // windowed and whole
-              const BSplineCurve b = detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi,
-                                                      detail::CsrStrategy::Vectorised, window);
+              const BSplineCurve b =
+                  detail::fitCubic(q, t, closed, info.size, 1e-9, rule, quasi, detail::CsrStrategy::Vectorised, window);
               ASSERT_EQ(a.poles.rows(), b.poles.rows());
               EXPECT_LT((a.poles - b.poles).cwiseAbs().maxCoeff(), 1e-14) << dim << closed << n << quasi << window;
             }

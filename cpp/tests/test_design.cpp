@@ -72,7 +72,7 @@ TEST(BasicCurves, CircleArcParameterOfPointByEq4RoundTrips) {
     }
   }
   const CircleArc arc(kTilted, 2.0, 0.3, 1.0);
-  EXPECT_THROW(arc.parameterOf(kTilted.at(3.0, 0.0)), InputError);               // off the circle
+  EXPECT_THROW(arc.parameterOf(kTilted.at(3.0, 0.0)), InputError);                                  // off the circle
   EXPECT_THROW(arc.parameterOf(kTilted.at(2.0 * std::cos(2.0), 2.0 * std::sin(2.0))), InputError);  // outside the arc
 }
 
@@ -132,20 +132,38 @@ TEST(Section6, ConicArcsWithRandomMarksAreExact) {
     c = toOcct(single(*ellipseArc(frame, a, b, -0.5, 2.5), marks).curve);
     EXPECT_LT(implicitDeviation(
                   c, c->FirstParameter(), c->LastParameter(),
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return q.x() * q.x() / (a * a) + q.y() * q.y() / (b * b) - 1; },
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return Eigen::Vector3d(2 * q.x() / (a * a), 2 * q.y() / (b * b), 0); }),
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return q.x() * q.x() / (a * a) + q.y() * q.y() / (b * b) - 1;
+                  },
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return Eigen::Vector3d(2 * q.x() / (a * a), 2 * q.y() / (b * b), 0);
+                  }),
               1e-12 * size);
     c = toOcct(single(*parabolaArc(frame, 0.8, -1.5, 2.0), marks).curve);
     EXPECT_LT(implicitDeviation(
                   c, c->FirstParameter(), c->LastParameter(),
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return q.y() * q.y() - 4 * 0.8 * q.x(); },
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return Eigen::Vector3d(-4 * 0.8, 2 * q.y(), 0); }),
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return q.y() * q.y() - 4 * 0.8 * q.x();
+                  },
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return Eigen::Vector3d(-4 * 0.8, 2 * q.y(), 0);
+                  }),
               1e-12 * size);
     c = toOcct(single(*hyperbolaArc(frame, a, b, -1.0, 1.2), marks).curve);
     EXPECT_LT(implicitDeviation(
                   c, c->FirstParameter(), c->LastParameter(),
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return q.x() * q.x() / (a * a) - q.y() * q.y() / (b * b) - 1; },
-                  [&](const Eigen::Vector3d& p) { const auto q = local(p); return Eigen::Vector3d(2 * q.x() / (a * a), -2 * q.y() / (b * b), 0); }),
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return q.x() * q.x() / (a * a) - q.y() * q.y() / (b * b) - 1;
+                  },
+                  [&](const Eigen::Vector3d& p) {
+                    const auto q = local(p);
+                    return Eigen::Vector3d(2 * q.x() / (a * a), -2 * q.y() / (b * b), 0);
+                  }),
               1e-12 * size);
   }
 }
@@ -352,8 +370,8 @@ TEST(Surfaces, RevolvedDesignedProfileIsExact) {
   EXPECT_THROW(revolve(d.curve, {0, 0, 0}, {0, 0, 0}), InputError);  // no axis
   // A space curve revolves exactly too: every pole keeps its distance to the axis.
   const auto spiral = archimedeanSpiral(kTilted, 0.5, 0.2, 0.0, 4.0);
-  const BSplineSurface twisted = revolve(mergePieces({piecePolygon(*spiral, Eigen::Vector3d(0.3, 0.5, 0.7))}, 0.0).curve,
-                                         {0, 0, 0}, {0, 0, 1});
+  const BSplineSurface twisted =
+      revolve(mergePieces({piecePolygon(*spiral, Eigen::Vector3d(0.3, 0.5, 0.7))}, 0.0).curve, {0, 0, 0}, {0, 0, 1});
   const Handle(Geom_BSplineCurve) profile =
       toOcct(mergePieces({piecePolygon(*spiral, Eigen::Vector3d(0.3, 0.5, 0.7))}, 0.0).curve);
   const Handle(Geom_BSplineSurface) ts = toOcct(twisted);

@@ -58,7 +58,8 @@ TEST(DesignSamples, JoinedToAnExactArcTheArcStaysExactAndTheCsrPartStaysTheCsrSp
   const PointMatrix q = unevenArc(21, 2.0, 0.0, 1.5);
   const double a = 1.5;
   const Frame frame{{2.0 * std::cos(a) - std::cos(a), 2.0 * std::sin(a) - std::sin(a), 0.0},
-                    Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+                    Eigen::Vector3d::UnitX(),
+                    Eigen::Vector3d::UnitY()};
   const CircleArc arc(frame, 1.0, a, 1.4);
   Eigen::VectorXd marks(5);
   marks << 0.15, 0.3, 0.5, 0.7, 0.85;

@@ -10,11 +10,11 @@
 #include <limits>
 #include <random>
 
-#include "clothoid.hpp"
-#include "spiral.hpp"
 #include "fairsplines/fair_blend.hpp"
-#include "clothoid_arcs.hpp"
 #include "fairsplines/occt.hpp"
+#include "clothoid.hpp"
+#include "clothoid_arcs.hpp"
+#include "spiral.hpp"
 
 using namespace fairsplines;
 using Eigen::Vector2d;
@@ -149,7 +149,6 @@ TEST(FairBlend, G1SolvesEveryClothoidArcWithExactEndsAndCertifiedMonotoneCurvatu
   EXPECT_EQ(solved, 1000);
   std::printf("G1: %d of 1000 solved, at most %d spans\n", solved, maxSpans);
 }
-
 
 // The same arcs with their end curvatures: G2. At least 95% solved, with the curvatures
 // matched to 1e-9 relative and the curvature monotone by the certificate and by sampling.
@@ -352,9 +351,11 @@ TEST(FairBlend, G2RefusalsRefuseNoMonotoneCurveAndAgreeWithTheSolver) {
     const detail::SpiralSolution sol = detail::solveG2Spiral(theta0, k0, theta1, k1);
     EXPECT_FALSE(sol.monotone || sol.spline) << why;
   }
-  std::printf("G2 refusals: none of %d monotone curves refused (%d turn past 180 degrees), %d of the first 300 "
-              "solved; of %d random C-shaped data, %d fail only the turning rule (%d past Vogt's convex case), and "
-              "none is solved\n", curves, pastHalfTurn, solved, drawn, ruled, pastVogt);
+  std::printf(
+      "G2 refusals: none of %d monotone curves refused (%d turn past 180 degrees), %d of the first 300 "
+      "solved; of %d random C-shaped data, %d fail only the turning rule (%d past Vogt's convex case), and "
+      "none is solved\n",
+      curves, pastHalfTurn, solved, drawn, ruled, pastVogt);
   EXPECT_GT(pastVogt, 20);
 }
 

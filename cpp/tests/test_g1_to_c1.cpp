@@ -78,7 +78,8 @@ TEST(Eta73, QuarticCircleIsC1AndExactForAnyNewScalars) {
     const Handle(Geom_BSplineCurve) projected = toOcct(s, true);
     double off = 0.0;
     for (int j = 0; j <= 2000; ++j) {
-      const double u = projected->FirstParameter() + (projected->LastParameter() - projected->FirstParameter()) * j / 2000;
+      const double u =
+          projected->FirstParameter() + (projected->LastParameter() - projected->FirstParameter()) * j / 2000;
       off = std::max(off, std::abs(gp_Vec(projected->Value(u).XYZ()).Magnitude() - 1.0));
     }
     EXPECT_LT(off, 1e-12);

@@ -63,14 +63,17 @@ double c2Jump(const C2SexticSpline& s) {
   const Handle(Geom_BSplineCurve) c = toOcct(s, false);
   double worst = 0.0;
   const int n = s.pieces();
-  auto jump = [&](const gp_Vec& l, const gp_Vec& r, double scale) { worst = std::max(worst, (l - r).Magnitude() / scale); };
+  auto jump = [&](const gp_Vec& l, const gp_Vec& r, double scale) {
+    worst = std::max(worst, (l - r).Magnitude() / scale);
+  };
   for (int k = 2; k <= n; ++k) {
     const double u = c->Knot(k);
     const gp_Vec l0 = c->LocalDN(u, k - 1, k, 1), r0 = c->LocalDN(u, k, k + 1, 1);
     const double scale = std::max(l0.Magnitude(), c->LocalDN(u, k - 1, k, 2).Magnitude());
     gp_Pnt pl = c->LocalValue(u, k - 1, k), pr = c->LocalValue(u, k, k + 1);
     worst = std::max(worst, pl.Distance(pr) / scale);
-    for (int order = 1; order <= 2; ++order) jump(c->LocalDN(u, k - 1, k, order), c->LocalDN(u, k, k + 1, order), scale);
+    for (int order = 1; order <= 2; ++order)
+      jump(c->LocalDN(u, k - 1, k, order), c->LocalDN(u, k, k + 1, order), scale);
     worst = std::max(worst, (s.bezier.row(7 * (k - 1) - 1) - s.bezier.row(7 * (k - 1))).norm() / scale);
   }
   if (s.closed) {
@@ -245,8 +248,8 @@ TEST(Mixed, SymmetricRunsGetRhoAndStayMirrorSymmetric) {
   const Eigen::VectorXd theta = vec({0.0, 0.9, 1.4, 2.6, 3.1, 4.5, 5.2, 2 * kPi});
   const G2CircleSpline circle = g2Circle(theta);
   const std::vector<CircleReparam> choice = mixedChoice(circle);
-  const std::vector<CircleReparam> expected = {CircleReparam::Sigma, CircleReparam::Rho, CircleReparam::Rho,
-                                               CircleReparam::Rho, CircleReparam::Sigma, CircleReparam::Sigma,
+  const std::vector<CircleReparam> expected = {CircleReparam::Sigma, CircleReparam::Rho,   CircleReparam::Rho,
+                                               CircleReparam::Rho,   CircleReparam::Sigma, CircleReparam::Sigma,
                                                CircleReparam::Sigma};
   EXPECT_EQ(choice, expected);
   // The centre arc (2, from 1.4 to 2.6) is parameterised mirror-symmetrically about its
@@ -309,7 +312,8 @@ TEST(Eq10, HermiteQuadraticsOfThePerturbedCubicStayC2InsideEachArc) {
   const Handle(Geom_BSplineCurve) projected = toOcct(s, true);
   const Reparam& r = maps[2][1];
   for (int j = 0; j <= 10; ++j) {
-    const double u = j / 10.0, b0 = std::pow(1 - u, 3), b1 = 3 * u * (1 - u) * (1 - u), b2 = 3 * u * u * (1 - u), b3 = u * u * u;
+    const double u = j / 10.0, b0 = std::pow(1 - u, 3), b1 = 3 * u * (1 - u) * (1 - u), b2 = 3 * u * u * (1 - u),
+                 b3 = u * u * u;
     const double t = (b0 * r(0, 0) + b1 * r(1, 0) + b2 * r(2, 0) + b3 * r(3, 0)) /
                      (b0 * r(0, 1) + b1 * r(1, 1) + b2 * r(2, 1) + b3 * r(3, 1));
     const double c0 = std::pow(1 - t, 3), c1 = 3 * t * (1 - t) * (1 - t), c2 = 3 * t * t * (1 - t), c3 = t * t * t;

@@ -106,8 +106,7 @@ TEST(Hardening, DerivativePolygonsWithoutPolesIsRefused) {  // derivative_polygo
 }
 
 TEST(Hardening, DerivativePolygonsOfAnInfinitePoleIsRefused) {  // derivative_polygons_inf_pole
-  const BSplineCurve c =
-      curveOf(3, rows2({{0, 0}, {1, 1}, {2, -HUGE_VAL}, {3, 0}}), vec({0, 1}), ints({4, 4}), false);
+  const BSplineCurve c = curveOf(3, rows2({{0, 0}, {1, 1}, {2, -HUGE_VAL}, {3, 0}}), vec({0, 1}), ints({4, 4}), false);
   expectRefused([&] { derivativePolygons(c); }, "poles are not finite");
 }
 
@@ -116,7 +115,8 @@ TEST(Hardening, PeriodicDegreeAtLeastPoleCountIsRefused) {
   // variation_out_of_range_periodic_degree5_2poles
   const BSplineCurve five3 =
       curveOf(5, rows2({{0, 0}, {1, 2}, {3, 1}}), vec({0, 16, 17, 19.95}), ints({1, 1, 1, 1}), true);
-  expectRefused([&] { certifyMonotoneCurvature(five3); }, "periodic B-spline of degree 5 needs at least 5 poles, got 3");
+  expectRefused([&] { certifyMonotoneCurvature(five3); },
+                "periodic B-spline of degree 5 needs at least 5 poles, got 3");
   expectRefused([&] { toOcct(five3); }, "needs at least 5 poles");
   const BSplineCurve three2 = curveOf(3, rows2({{0, 0}, {1, 2}}), vec({0, 1, 2}), ints({1, 1, 1}), true);
   expectRefused([&] { certifyMonotoneCurvature(three2); }, "degree 3 needs at least 3 poles, got 2");
@@ -126,9 +126,10 @@ TEST(Hardening, PeriodicDegreeAtLeastPoleCountIsRefused) {
 
 TEST(Hardening, DerivativePolygonsThatOverflowAreRefused) {  // fuzz_certificate, found in CI's 20 s run
   // A pole of 1e300 over a knot span of 2.4e-4: the second-derivative polygon was -inf.
-  const BSplineCurve c = curveOf(3, rows2({{-0.03125, -0.031249999999999972}, {-0.031249968749999971, 0},
-                                           {1e300, 0.03125}, {-0.0625, -0.060546875}}),
-                                 vec({2.84375, 2.843994140625}), ints({4, 4}), false);
+  const BSplineCurve c = curveOf(
+      3,
+      rows2({{-0.03125, -0.031249999999999972}, {-0.031249968749999971, 0}, {1e300, 0.03125}, {-0.0625, -0.060546875}}),
+      vec({2.84375, 2.843994140625}), ints({4, 4}), false);
   expectRefused([&] { derivativePolygons(c); }, "not finite");
 }
 
@@ -145,8 +146,8 @@ TEST(Hardening, CertificateOfAHugePeriodicPoleIsFiniteOrRefused) {  // normal_na
 }
 
 TEST(Hardening, VariationOfAHugeRationalPeriodicPoleIsFiniteOrRefused) {  // variation_nan_rational_periodic_huge_pole
-  BSplineCurve c = curveOf(2, rows2({{0, 0}, {1, -3.6e120}, {2, 0}, {1, 1}}), vec({0, 1, 2, 3, 4}),
-                           ints({1, 1, 1, 1, 1}), true);
+  BSplineCurve c =
+      curveOf(2, rows2({{0, 0}, {1, -3.6e120}, {2, 0}, {1, 1}}), vec({0, 1, 2, 3, 4}), ints({1, 1, 1, 1, 1}), true);
   c.weights = vec({1, 0.5, 1, 2});
   try {
     EXPECT_TRUE(std::isfinite(curvatureVariation(c)));
@@ -175,8 +176,8 @@ TEST(Hardening, CsrOfDenormalParametersIsRefusedOrFinite) {  // denormal_paramet
 TEST(Hardening, CsrOfADenormalParameterGapIsRefusedOrValid) {  // denormal_parameter_gap_knots_too_close
   CsrOptions options;  // a first span of 9.8e-311 (denormal): OCCT called the knots too close
   options.parameters = vec({0, 9.8419189453126977e-311, 5.0098419189453231e-308});
-  const PointMatrix q = rows2({{-7.98779296875, -8}, {-0.03125, -0.031249999999999972},
-                               {-0.031249968749999971, 0.033447265625}});
+  const PointMatrix q =
+      rows2({{-7.98779296875, -8}, {-0.03125, -0.031249999999999972}, {-0.031249968749999971, 0.033447265625}});
   const std::string message = refusal([&] { expectValid(csrSpline(q, options)); });
   if (!message.empty()) EXPECT_NE(message.find("too close together"), std::string::npos) << message;
 }
@@ -212,8 +213,11 @@ TEST(Hardening, SpiralOfAHugeAngleIsRefused) {  // spiral_theta1_1.8e308_d1_nan
 }
 
 TEST(Hardening, MarksFourULPsApartAreRefused) {  // merge_marks_4e-16_apart_knots_too_close
-  expectRefused([] { completeMarks(vec({0.49975585937500089, 0.49975585937500133, 0.49975585937500178})); },
-                "too close together");
+  expectRefused(
+      [] {
+        completeMarks(vec({0.49975585937500089, 0.49975585937500133, 0.49975585937500178}));
+      },
+      "too close together");
 }
 
 // --- fuzz_monotone ------------------------------------------------------------------------
@@ -225,8 +229,9 @@ TEST(Hardening, Algorithm1OfHugeDifferencesIsRefused) {  // algorithm1_differenc
 TEST(Hardening, Algorithm1OfDenormalKnotsIsRefused) {  // algorithm1_denormal_knot_too_close
   // 2 differences: poles C_0..C_3, flat knots t_0..t_7.
   const Eigen::VectorXd t = vec({0, 0, 0, 0, 4e-323, 0.0315, 0.0315, 0.0315});
-  const std::string message =
-      refusal([&] { expectValid(designMonotone(Vector2d(1, 0), rows2({{0, 1}, {-0.5, 0.5}}), t).curve); });
+  const std::string message = refusal([&] {
+    expectValid(designMonotone(Vector2d(1, 0), rows2({{0, 1}, {-0.5, 0.5}}), t).curve);
+  });
   EXPECT_NE(message, "");
 }
 
@@ -347,8 +352,11 @@ TEST(Hardening, SlowG1BlendFinishesWithinTheWorkBudget) {  // g1_10_seconds
 }
 
 TEST(Hardening, SphereOfRadius1_7e308IsRefused) {  // sphere_radius_1.7e308_patch_nan
-  expectRefused([] { sphereZone(ShapeFrame{}, 1.7e308, vec({4.47998046875, 8.449951171875}), vec({-0.5, 0.5})); },
-                "is too large: the sphere's points would overflow");
+  expectRefused(
+      [] {
+        sphereZone(ShapeFrame{}, 1.7e308, vec({4.47998046875, 8.449951171875}), vec({-0.5, 0.5}));
+      },
+      "is too large: the sphere's points would overflow");
 }
 
 TEST(Hardening, EndsRefusedByVogtsTheoremSearchNoClothoidSpline) {  // fallback_variation_7s_timeout
@@ -374,9 +382,12 @@ TEST(Hardening, EndsRefusedByVogtsTheoremSearchNoClothoidSpline) {  // fallback_
 
 TEST(Hardening, ConeOfRadiusDblMaxIsRefused) {  // cone_radius0_dblmax_pole_inf (the long run on the fixed kernel)
   ShapeFrame frame;
-  expectRefused([&] { cone(frame, 1.7976931348623157e308, 1.8314097676431909e-314, vec({4.47998046875, 8.449951171875}),
-                           vec({0, 6.103515625e-05})); },
-                "the cone's radius reaches");
+  expectRefused(
+      [&] {
+        cone(frame, 1.7976931348623157e308, 1.8314097676431909e-314, vec({4.47998046875, 8.449951171875}),
+             vec({0, 6.103515625e-05}));
+      },
+      "the cone's radius reaches");
   // Within DBL_MAX / 64 every pole is finite.
   const G2Surface ok = cone(frame, 1e300, 0.5, vec({0.0, 2.0, 4.0, 6.283185307179586}), vec({0, 1, 2}));
   for (int I = 0; I < ok.nu; ++I) {

@@ -547,8 +547,7 @@ TEST(Monotone, Certificate_PeriodicCurvesAndSingularAndNonPlanar) {
   circle->SetPeriodic();
   MonotonicityCertificate cert = certifyMonotoneCurvature(fromOcct(circle));
   EXPECT_TRUE(cert.increasing && cert.decreasing) << cert.reason;
-  Handle(Geom_BSplineCurve) ellipse =
-      GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(), 3.0, 1.0));
+  Handle(Geom_BSplineCurve) ellipse = GeomConvert::CurveToBSplineCurve(new Geom_Ellipse(gp_Ax2(), 3.0, 1.0));
   ellipse->SetPeriodic();
   EXPECT_FALSE(certifyMonotoneCurvature(fromOcct(ellipse)).monotone);
   PointMatrix cusp(4, 2);  // first two poles equal: P'(0) = 0

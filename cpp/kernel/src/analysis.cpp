@@ -111,9 +111,10 @@ std::optional<gp_Vec> planeNormal(const Handle(Geom_BSplineCurve)& curve, double
   }
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   Eigen::Vector3d normal = eig.eigenvectors().col(0);  // smallest spread
-  const double size = (hi - lo).norm();  // the bounding box's diagonal, in the frame's units
+  const double size = (hi - lo).norm();                // the bounding box's diagonal, in the frame's units
   double offPlane = 0.0;
-  for (int i = 1; i <= n; ++i) offPlane = std::max(offPlane, std::abs((frame.offset(curve->Pole(i)) - centroid).dot(normal)));
+  for (int i = 1; i <= n; ++i)
+    offPlane = std::max(offPlane, std::abs((frame.offset(curve->Pole(i)) - centroid).dot(normal)));
   if (offPlane > relTol * size) return std::nullopt;
   // A curve in a plane parallel to a coordinate plane gets exactly that axis as normal.
   for (int axis = 0; axis < 3; ++axis) {
@@ -205,7 +206,7 @@ std::vector<CurvatureExtremum> curvatureExtrema(const CurvatureProfile& profile)
     double u = u1, kappa = k[j];
     if (second != 0.0) {
       u = std::clamp(0.5 * (u0 + u1) - d01 / (2.0 * second), u0, u2);
-      kappa = k[j] + (u - u1) * (d01 + second * (u - u0)) ;
+      kappa = k[j] + (u - u1) * (d01 + second * (u - u0));
     }
     const double s = u <= u1 ? profile.s[j - 1] + (profile.s[j] - profile.s[j - 1]) * (u - u0) / (u1 - u0)
                              : profile.s[j] + (profile.s[j + 1] - profile.s[j]) * (u - u1) / (u2 - u1);

@@ -16,8 +16,8 @@
 namespace fairsplines {
 
 using detail::Jet;
-using detail::Vec2;
 using detail::kPi;
+using detail::Vec2;
 
 // ---------------------------------------------------------------------------------------
 // Algorithm 2: the hodograph of the five-pole curve and the Theorem 2 slacks.
@@ -38,18 +38,30 @@ struct V {
   T x, y;
 };
 template <class T>
-V<T> operator+(const V<T>& a, const V<T>& b) { return {a.x + b.x, a.y + b.y}; }
+V<T> operator+(const V<T>& a, const V<T>& b) {
+  return {a.x + b.x, a.y + b.y};
+}
 template <class T>
-V<T> operator-(const V<T>& a, const V<T>& b) { return {a.x - b.x, a.y - b.y}; }
+V<T> operator-(const V<T>& a, const V<T>& b) {
+  return {a.x - b.x, a.y - b.y};
+}
 template <class T>
-V<T> operator*(double s, const V<T>& a) { return {s * a.x, s * a.y}; }
+V<T> operator*(double s, const V<T>& a) {
+  return {s * a.x, s * a.y};
+}
 template <class T>
-T crossT(const V<T>& a, const V<T>& b) { return a.x * b.y - a.y * b.x; }
+T crossT(const V<T>& a, const V<T>& b) {
+  return a.x * b.y - a.y * b.x;
+}
 template <class T>
-T dotT(const V<T>& a, const V<T>& b) { return a.x * b.x + a.y * b.y; }
+T dotT(const V<T>& a, const V<T>& b) {
+  return a.x * b.x + a.y * b.y;
+}
 /// Angle from a to b, in (-pi, pi].
 template <class T>
-T angle(const V<T>& a, const V<T>& b) { return atan2(crossT(a, b), dotT(a, b)); }
+T angle(const V<T>& a, const V<T>& b) {
+  return atan2(crossT(a, b), dotT(a, b));
+}
 
 constexpr int kSlacks = 10;
 
@@ -67,7 +79,7 @@ Hodograph<T> hodograph(const T* x, const Vec2& P, const Vec2& Tan) {
   h.w0 = {s, T(0.0)};
   h.E1 = {x[2], x[3]};
   const V<T> lt{lambda * Tan.x(), lambda * Tan.y()};
-  const V<T> R1 = 2.0 * (lt - h.w0) - 2.0 * h.E1;                          // E0 + E2
+  const V<T> R1 = 2.0 * (lt - h.w0) - 2.0 * h.E1;                           // E0 + E2
   const V<T> R2 = 6.0 * (V<T>{T(P.x()) - 2.0 * s, T(P.y())}) - 6.0 * h.E1;  // 5 E0 + E2
   h.E0 = 0.25 * (R2 - R1);
   h.E2 = R1 - h.E0;
@@ -85,9 +97,9 @@ void slacks(const T* x, const Vec2& P, const Vec2& Tan, T* m) {
   m[0] = angle(ex, h.E0);  // psi0 >= 0
   m[1] = angle(h.E0, ey);  // psi0 <= pi/2
   const T r0 = sqrt(dotT(h.E0, h.E0)), r1 = sqrt(dotT(h.E1, h.E1)), r2 = sqrt(dotT(h.E2, h.E2));
-  m[2] = angle(h.D1, h.E1);                               // arg C^1_1 <= arg C^2_1 (Lemma 3)
-  m[3] = angle(h.E1, h.E0);                               // arg C^2_1 <= arg C^2_0 (Lemma 3)
-  m[4] = r1 / r0;                                         // |C^2_1| > 0
+  m[2] = angle(h.D1, h.E1);                                  // arg C^1_1 <= arg C^2_1 (Lemma 3)
+  m[3] = angle(h.E1, h.E0);                                  // arg C^2_1 <= arg C^2_0 (Lemma 3)
+  m[4] = r1 / r0;                                            // |C^2_1| > 0
   m[5] = (dotT(h.E0, h.E1) - dotT(h.E1, h.E1)) / (r0 * r1);  // inside the circle (Lemma 2)
   m[6] = angle(h.D2, h.E2);
   m[7] = angle(h.E2, h.E1);
@@ -136,7 +148,7 @@ Jet barrierJet(const Eigen::Vector4d& x, const Vec2& P, const Vec2& Tan) {
 double margin(const Eigen::Vector4d& x, const Vec2& P, const Vec2& Tan) {
   double m[kSlacks];
   slacks(x.data(), P, Tan, m);
-  const double fractions[] = {m[0] / (0.5 * kPi), m[1] / (0.5 * kPi), m[2] / (m[2] + m[3]), m[3] / (m[2] + m[3]),
+  const double fractions[] = {m[0] / (0.5 * kPi),   m[1] / (0.5 * kPi),   m[2] / (m[2] + m[3]), m[3] / (m[2] + m[3]),
                               m[4] / (m[4] + m[5]), m[5] / (m[4] + m[5]), m[6] / (m[6] + m[7]), m[7] / (m[6] + m[7]),
                               m[8] / (m[8] + m[9]), m[9] / (m[8] + m[9])};
   return *std::min_element(std::begin(fractions), std::end(fractions));
@@ -215,9 +227,9 @@ std::array<Vec2, 5> polesOf(const Eigen::Vector4d& x, const Vec2& P, const Vec2&
   const Hodograph<double> h = hodograph(x.data(), P, Tan);
   std::array<Vec2, 5> c;
   c[0] = Vec2::Zero();
-  c[1] = Vec2(x[0] / 3.0, 0.0);                              // V0 = w0 / 3
-  c[2] = c[1] + Vec2(h.D1.x, h.D1.y) / 1.5;                  // V1 = D1 / 1.5
-  c[3] = P - x[1] / 3.0 * Tan;                               // V3 = D3 / 3 = lambda T / 3
+  c[1] = Vec2(x[0] / 3.0, 0.0);              // V0 = w0 / 3
+  c[2] = c[1] + Vec2(h.D1.x, h.D1.y) / 1.5;  // V1 = D1 / 1.5
+  c[3] = P - x[1] / 3.0 * Tan;               // V3 = D3 / 3 = lambda T / 3
   c[4] = P;
   return c;
 }

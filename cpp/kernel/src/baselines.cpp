@@ -14,8 +14,8 @@
 namespace fairsplines {
 
 Handle(Geom_BSplineCurve) classicInterpolation(PointsRef q, Parametrization parametrization, bool closed) {
-  const Eigen::VectorXd t = parameters(validateSamples(q, closed, closed ? 3 : 2, "classic interpolation").chords,
-                                       parametrization);
+  const Eigen::VectorXd t =
+      parameters(validateSamples(q, closed, closed ? 3 : 2, "classic interpolation").chords, parametrization);
   const int n = static_cast<int>(q.rows());
   Handle(TColgp_HArray1OfPnt) points = new TColgp_HArray1OfPnt(1, n);
   Handle(TColStd_HArray1OfReal) params = new TColStd_HArray1OfReal(1, closed ? n + 1 : n);

@@ -66,7 +66,8 @@ void requireEvaluable(const BasicCurve& curve, const char* what, bool still = fa
 
 /// The boundary rule for a parameter found: finite, or the curve is refused.
 double requireFiniteParameter(double u, const Eigen::Vector3d& q) {
-  if (!std::isfinite(u)) throw InputError("the parameter of point " + describe(q) + " is not finite in double precision");
+  if (!std::isfinite(u))
+    throw InputError("the parameter of point " + describe(q) + " is not finite in double precision");
   return u;
 }
 
@@ -111,8 +112,10 @@ double BasicCurve::parameterOf(const Eigen::Vector3d& q, double tolerance) const
     const Eigen::Vector3d r = value(u) - q, f1 = d1(u);
     const double gu = r.dot(f1), dg = f1.squaredNorm() + r.dot(d2(u));
     // Keep the bracket [lo, hi] around the root of g where g changes sign.
-    if (g(lo) * gu <= 0.0) hi = u;
-    else if (g(hi) * gu <= 0.0) lo = u;
+    if (g(lo) * gu <= 0.0)
+      hi = u;
+    else if (g(hi) * gu <= 0.0)
+      lo = u;
     double next = dg > 0.0 ? u - gu / dg : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (std::abs(next - u) <= 1e-15) {
@@ -208,8 +211,8 @@ std::unique_ptr<RationalBezierCurve> lineSegment(const Eigen::Vector3d& p0, cons
   const Eigen::Vector3d a = p0 / scale, b = p1 / scale;
   if (!((b - a).norm() * scale < std::numeric_limits<double>::infinity())) {
     std::ostringstream msg;
-    msg << "the line segment is too long for double precision: its end points are " << (b - a).norm() << " x "
-        << scale << " apart";
+    msg << "the line segment is too long for double precision: its end points are " << (b - a).norm() << " x " << scale
+        << " apart";
     throw InputError(msg.str());
   }
   if ((b - a).norm() <= 1e-14 * std::max({1.0 / scale, a.norm(), b.norm()})) {
@@ -309,7 +312,8 @@ std::unique_ptr<RationalBezierCurve> ellipseArc(const Frame& frame, double a, do
 
 std::unique_ptr<RationalBezierCurve> parabolaArc(const Frame& frame, double focal, double t0, double t1) {
   frame.check();
-  if (!(focal > 0.0) || !std::isfinite(focal)) throw InputError("degenerate parabola arc: the focal length must be positive");
+  if (!(focal > 0.0) || !std::isfinite(focal))
+    throw InputError("degenerate parabola arc: the focal length must be positive");
   if (!(t1 > t0) || !std::isfinite(t0) || !std::isfinite(t1)) {
     throw InputError("degenerate parabola arc: its parameter range must be increasing");
   }
@@ -394,7 +398,8 @@ std::unique_ptr<ParametricCurve> archimedeanSpiral(const Frame& frame, double a,
 std::unique_ptr<ParametricCurve> circleInvolute(const Frame& frame, double r, double t0, double t1) {
   frame.check();
   if (!(r > 0.0) || !std::isfinite(r)) throw InputError("degenerate involute: the radius must be positive");
-  if (!(t1 > t0) || !(t0 >= 0.0)) throw InputError("degenerate involute: its range must be increasing and start at t >= 0");
+  if (!(t1 > t0) || !(t0 >= 0.0))
+    throw InputError("degenerate involute: its range must be increasing and start at t >= 0");
   auto jet = [frame, r](double t, Eigen::Vector3d& f, Eigen::Vector3d& df, Eigen::Vector3d& d2f) {
     const double c = std::cos(t), s = std::sin(t);
     f = frame.at(r * (c + t * s), r * (s - t * c));

@@ -106,7 +106,6 @@ void aroundAxis(G1RevolvedShape& s, const ShapeFrame& frame, const Eigen::Vector
   g1Circle(angles, s.circle, s.beta, s.closedU);
 }
 
-
 /// Negative control: arc i split at its middle, each half degree-raised to a quartic (the
 /// identity map in the form of composeQuadratic2), no eta.
 PointMatrix splitAndRaise(const PointMatrix& quadratics) {
@@ -333,7 +332,8 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   shape.frame.check();
   const int n = shape.piecesU(), m = shape.piecesV();
   if (n < 1 || m < 1) throw InputError("the shape has no patches");
-  if (!shape.closedU) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
+  if (!shape.closedU)
+    throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
   if (!(shape.end.x() > 1e-9 * (std::abs(shape.end.y()) + shape.size))) {
     throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
   }
@@ -385,8 +385,8 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   out.knotsV[out.rowsBasic + 1] = basicKnotsV[out.rowsBasic] + h;
   out.knotsV[out.rowsBasic + 2] = basicKnotsV[out.rowsBasic] + 2 * h;
   for (int sp = 0; sp < spansV; ++sp) {
-    out.knotsV[out.rowsBasic + 3 + sp] = out.knotsV[out.rowsBasic + 2 + sp] +
-                                         h * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
+    out.knotsV[out.rowsBasic + 3 + sp] =
+        out.knotsV[out.rowsBasic + 2 + sp] + h * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
   }
 
   for (int k = 0; k < out.piecesU; ++k) {

@@ -50,7 +50,8 @@ SplitPieces splitBezierPieces(const PointMatrix& bezier, int order, const Eigen:
   }
   out.first[P] = static_cast<int>(pieces.size());
   out.bezier.resize(order * static_cast<Eigen::Index>(pieces.size()), bezier.cols());
-  for (size_t k = 0; k < pieces.size(); ++k) out.bezier.middleRows(order * static_cast<Eigen::Index>(k), order) = pieces[k];
+  for (size_t k = 0; k < pieces.size(); ++k)
+    out.bezier.middleRows(order * static_cast<Eigen::Index>(k), order) = pieces[k];
   out.knots = Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
   return out;
 }
@@ -152,7 +153,8 @@ TaggedPatch raisePatch(const TaggedPatch& patch, int du, int dv) {
 Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double tolerance, int smoothness) {
   if (smoothness < 0) throw InputError("smoothness must be 0 or more");
   const int rows = complex.rowsBasic + complex.rowsTransition + complex.rowsFreeForm, K = complex.piecesU;
-  if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1) throw InputError("the complex has no shared knots");
+  if (complex.knotsV.size() != rows + 1 || complex.knotsU.size() != K + 1)
+    throw InputError("the complex has no shared knots");
   // Knots OpenCASCADE would call "too close" (arcs or heights a few ulps apart) are refused by name.
   requireSeparateKnots(complex.knotsU, "the complex's u knots (around the axis)");
   requireSeparateKnots(complex.knotsV, "the complex's v knots (along the profile)");
@@ -195,7 +197,8 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
   try {
     s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
   } catch (const Standard_Failure& failure) {
-    throw InputError(std::string("OpenCASCADE rejected the single surface of the complex: ") + failure.GetMessageString());
+    throw InputError(std::string("OpenCASCADE rejected the single surface of the complex: ") +
+                     failure.GetMessageString());
   }
   // C^smoothness where the multiplicities allow it: each interior knot down to degree - smoothness.
   for (int i = 2; i <= K; ++i) {
@@ -208,7 +211,8 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
   for (int j = 2; j <= rows; ++j) {
     if (!s->RemoveVKnot(j, std::max(e - smoothness, 0), tolerance * size)) {
       std::ostringstream os;
-      os << "the complex is not C" << smoothness << " across v knot " << j - 1 << " (basic rows only G2? use sexticInV)";
+      os << "the complex is not C" << smoothness << " across v knot " << j - 1
+         << " (basic rows only G2? use sexticInV)";
       throw InputError(os.str());
     }
   }

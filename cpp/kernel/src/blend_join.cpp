@@ -12,12 +12,12 @@
 
 namespace fairsplines {
 
-using detail::BasicLayers;
-using detail::RevolvedProfile;
 using detail::assembleBlend;
+using detail::BasicLayers;
 using detail::checkedLongitudes;
 using detail::lineProfile;
 using detail::reversedProfile;
+using detail::RevolvedProfile;
 using detail::revolveRows;
 using detail::sphereProfile;
 using detail::stripPatch;
@@ -44,7 +44,8 @@ JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method, Interfac
       side.profile = sphereProfile(shape.size0, shape.profile, method);
       break;
     case ShapeOfRevolution::Kind::Cone:
-      if (!std::isfinite(shape.size0) || !std::isfinite(shape.size1)) throw InputError("a cone needs a finite radius and slope");
+      if (!std::isfinite(shape.size0) || !std::isfinite(shape.size1))
+        throw InputError("a cone needs a finite radius and slope");
       side.profile = lineProfile(shape.size0, shape.size1, shape.profile);
       break;
     case ShapeOfRevolution::Kind::Torus:
@@ -70,7 +71,8 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
   out.closedU = a.lon.closed;
   out.rowsBasic = static_cast<int>(a.profile.cubic.size());
   out.rowsFreeForm = static_cast<int>(b.profile.cubic.size());
-  out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
+  out.knotsV =
+      Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
   for (int k = 0; k < out.piecesU; ++k) {
     Homogeneous4 top, bottom;
     for (int j = 0; j < out.rowsBasic; ++j) {
@@ -157,7 +159,8 @@ BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution
     os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.lon.pieces() << ")";
     throw InputError(os.str());
   }
-  if (a.lon.closed != b.lon.closed) throw InputError("both shapes need a full turn around the axis, or both a partial one");
+  if (a.lon.closed != b.lon.closed)
+    throw InputError("both shapes need a full turn around the axis, or both a partial one");
   if (naive) return joinNaive(a, b);
   // Fig. 11: across the transition the scalars are averaged, betaT_i = sqrt(beta_i^top beta_i^bottom).
   const Eigen::VectorXd betaT = (a.lon.beta.array() * b.lon.beta.array()).sqrt().matrix();

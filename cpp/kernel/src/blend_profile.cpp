@@ -14,7 +14,8 @@ namespace detail {
 // ---------------------------------------------------------------------------------------
 // A surface of revolution in tensor form (docs/READINGS.md, blending paper)
 
-Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle, const Homogeneous3& profile) {
+Homogeneous4 revolveRows(const ShapeFrame& f, const Eigen::Ref<const PointMatrix>& circle,
+                         const Homogeneous3& profile) {
   const Eigen::Index ku = circle.rows(), kv = profile.rows();
   Homogeneous4 out(ku * kv, 4);
   for (Eigen::Index a = 0; a < ku; ++a) {
@@ -39,8 +40,9 @@ const double kPi = std::acos(-1.0);
 /// Throws InputError where the profile's end (the interface) lies on the axis.
 void checkInterfaceOffAxis(const RevolvedProfile& profile, const char* which) {
   if (!(profile.end.x() > 1e-9 * (std::abs(profile.end.y()) + profile.size))) {
-    throw InputError(std::string("the interface at the ") + which +
-                     " of the profile lies on the axis (a pole): there is nothing to join there; join at the other end");
+    throw InputError(
+        std::string("the interface at the ") + which +
+        " of the profile lies on the axis (a pole): there is nothing to join there; join at the other end");
   }
 }
 

@@ -26,7 +26,8 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
   c->Segment(u0, u1, v0, v1);
   du = c->UDegree();
   dv = c->VDegree();
-  if (c->NbUPoles() != du + 1 || c->NbVPoles() != dv + 1) throw InputError("the free-form net could not be split into Bézier patches");
+  if (c->NbUPoles() != du + 1 || c->NbVPoles() != dv + 1)
+    throw InputError("the free-form net could not be split into Bézier patches");
   Homogeneous4 out((du + 1) * (dv + 1), 4);
   for (int a = 0; a <= du; ++a) {
     for (int b = 0; b <= dv; ++b) {
@@ -41,10 +42,13 @@ Homogeneous4 bezierOf(const Handle(Geom_BSplineSurface)& s, double u0, double u1
 Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& T,
                                             const Eigen::VectorXd& cuts, int degree, bool closed) {
   const int n = static_cast<int>(T.size()) - 1;
-  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  auto mismatch = [](const std::string& why) {
+    return InputError("the free-form net does not match the interface: " + why);
+  };
   if (ring.IsNull()) throw mismatch("no surface");
   if (closed != ring->IsUPeriodic()) {
-    throw mismatch(closed ? "it must be periodic in u (closed around the axis)" : "it must be open in u, like the shape");
+    throw mismatch(closed ? "it must be periodic in u (closed around the axis)"
+                          : "it must be open in u, like the shape");
   }
   if (ring->UDegree() != degree || ring->VDegree() != degree) {
     throw mismatch(degree == 3 ? "it must be bicubic" : "it must be biquadratic (degree 2 in u and v)");
@@ -64,7 +68,8 @@ Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& r
       throw mismatch(os.str());
     }
   }
-  if (ring->VMultiplicity(1) != degree + 1) throw mismatch("it must be clamped in v (its first row is at the interface)");
+  if (ring->VMultiplicity(1) != degree + 1)
+    throw mismatch("it must be clamped in v (its first row is at the interface)");
   Handle(Geom_BSplineSurface) r = Handle(Geom_BSplineSurface)::DownCast(ring->Copy());
   for (Eigen::Index k = 0; k < cuts.size(); ++k) {
     bool existing = false;
@@ -76,7 +81,9 @@ Handle(Geom_BSplineSurface) matchRingStrict(const Handle(Geom_BSplineSurface)& r
 
 Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ring, const ShapeFrame& frame,
                                            double period, int degree, double turn) {
-  auto mismatch = [](const std::string& why) { return InputError("the free-form net does not match the interface: " + why); };
+  auto mismatch = [](const std::string& why) {
+    return InputError("the free-form net does not match the interface: " + why);
+  };
   const bool closed = std::abs(turn - 2 * M_PI) <= 1e-9;
   if (ring.IsNull()) throw mismatch("no surface");
   if (closed && !ring->IsUPeriodic()) throw mismatch("it must be periodic in u (closed around the axis)");
@@ -101,7 +108,8 @@ Handle(Geom_BSplineSurface) normalisedRing(const Handle(Geom_BSplineSurface)& ri
     previous = angle;
   }
   const double winding = turned / turn;
-  if (std::abs(winding + 1) < 0.5) throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
+  if (std::abs(winding + 1) < 0.5)
+    throw mismatch("its first row turns the other way around the axis (reverse its u direction)");
   if (std::abs(winding - 1) >= 0.5) {
     throw mismatch(closed ? "its first row does not go once around the shape's axis"
                           : "its first row does not run along the shape's angles around the axis");
@@ -118,7 +126,8 @@ Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, c
   const double period = knotsU[knotsU.size() - 1] - knotsU[0];
   for (Eigen::Index k = 0; k < knotsU.size(); ++k) {
     bool existing = false;
-    for (int i = 1; i <= ring->NbUKnots(); ++i) existing = existing || std::abs(knotsU[k] - ring->UKnot(i)) <= 1e-12 * period;
+    for (int i = 1; i <= ring->NbUKnots(); ++i)
+      existing = existing || std::abs(knotsU[k] - ring->UKnot(i)) <= 1e-12 * period;
     if (!existing) r->InsertUKnot(knotsU[k], 1, 1e-12 * period);
   }
   return r;
@@ -160,8 +169,8 @@ Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleS
   for (int j = 0; j < 4; ++j) {
     const Eigen::Vector2d rz = base + j * step * p.tangent;
     auto at = [&](double theta, double radius) {
-      const Eigen::Vector3d q = frame.origin + radius * (std::cos(theta) * frame.x + std::sin(theta) * frame.y) +
-                                rz.y() * frame.z;
+      const Eigen::Vector3d q =
+          frame.origin + radius * (std::cos(theta) * frame.x + std::sin(theta) * frame.y) + rz.y() * frame.z;
       return Eigen::RowVector3d(q.transpose());
     };
     auto inner = [&](int i) {

@@ -79,8 +79,8 @@ G2CircleSpline g2Circle(const Eigen::VectorXd& theta) {
   for (int i = 1; i <= n; ++i) {
     if (!(theta[i] > theta[i - 1])) {
       std::ostringstream os;
-      os << "angles must increase: angle " << i << " (" << theta[i] << ") is not greater than angle " << i - 1
-         << " (" << theta[i - 1] << ")";
+      os << "angles must increase: angle " << i << " (" << theta[i] << ") is not greater than angle " << i - 1 << " ("
+         << theta[i - 1] << ")";
       throw InputError(os.str());
     }
     if (theta[i] - theta[i - 1] >= 4 * kPi / 3 - 1e-12) {
@@ -129,7 +129,8 @@ void G2Surface::setControl(int I, int J, int r, int s, const Eigen::Vector3d& p,
   if (I < 0 || I >= nu || J < 0 || J >= nv || r < 0 || r > 3 || s < 0 || s > 3) {
     throw InputError("control point index out of range");
   }
-  if (!(weight > 0) || !p.allFinite()) throw InputError("a control point needs finite coordinates and a positive weight");
+  if (!(weight > 0) || !p.allFinite())
+    throw InputError("a control point needs finite coordinates and a positive weight");
   const Eigen::Vector3d weighted = weight * p;
   if (!weighted.allFinite()) {
     throw InputError("the control point's weight " + exactNumber(weight) +
@@ -143,9 +144,11 @@ G2Surface revolveG2(const ShapeFrame& frame, const Homogeneous3& profile, const 
   frame.check();
   const int m = static_cast<int>(profile.rows() / 4);
   if (m < 1 || profile.rows() != 4 * m) throw InputError("a G2 profile needs 4 homogeneous Bézier points per piece");
-  if (profileBeta.size() != m || profileGamma.size() != m) throw InputError("a G2 profile needs one beta and gamma per piece");
+  if (profileBeta.size() != m || profileGamma.size() != m)
+    throw InputError("a G2 profile needs one beta and gamma per piece");
   for (Eigen::Index k = 0; k < profile.rows(); ++k) {
-    if (!(profile(k, 2) > 0)) throw InputError(angleList("the profile has a non-positive weight at point", static_cast<int>(k)));
+    if (!(profile(k, 2) > 0))
+      throw InputError(angleList("the profile has a non-positive weight at point", static_cast<int>(k)));
   }
   G2Surface s;
   s.nu = circle.pieces();
@@ -241,7 +244,8 @@ G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eige
   double reach = std::abs(radius0);
   for (Eigen::Index j = 0; j < heights.size(); ++j) reach = std::max(reach, std::abs(radius0 + slope * heights[j]));
   if (!(reach < std::numeric_limits<double>::max() / 64.0)) {
-    throw InputError("the cone's radius reaches " + exactNumber(reach) + " over its heights: too large, its points "
+    throw InputError("the cone's radius reaches " + exactNumber(reach) +
+                     " over its heights: too large, its points "
                      "would overflow");
   }
   const G2CircleSpline c = g2Circle(angles);
@@ -278,8 +282,9 @@ Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int de
       if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
       const gp_Pnt pole(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
       if (!std::isfinite(pole.X()) || !std::isfinite(pole.Y()) || !std::isfinite(pole.Z())) {
-        throw InputError(what + ": its poles are not finite (a small weight divides a large homogeneous point): "
-                                "the input is too large for double precision");
+        throw InputError(what +
+                         ": its poles are not finite (a small weight divides a large homogeneous point): "
+                         "the input is too large for double precision");
       }
       poles.SetValue(a + 1, b + 1, pole);
       weights.SetValue(a + 1, b + 1, h[3]);
@@ -303,9 +308,9 @@ Handle(Geom_BSplineSurface) bezierPatchToOcct(const Homogeneous4& bezier, int de
 Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J) {
   if (I < 0 || I >= surface.nu || J < 0 || J >= surface.nv) throw InputError("patch index out of range");
   // Row 4 r + s of the patch's 16 rows is b_rs: degree (3, 3) in the layout of bezierPatchToOcct.
-  return detail::bezierPatchToOcct(surface.bezier.middleRows((I * surface.nv + J) * 16, 16), 3, 3,
-                                   "the patch (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) +
-                                       ") of the shape");
+  return detail::bezierPatchToOcct(
+      surface.bezier.middleRows((I * surface.nv + J) * 16, 16), 3, 3,
+      "the patch (" + std::to_string(I + 1) + ", " + std::to_string(J + 1) + ") of the shape");
 }
 
 }  // namespace fairsplines

@@ -15,15 +15,15 @@
 
 namespace fairsplines {
 
-using detail::BasicLayers;
-using detail::RevolvedProfile;
 using detail::atInterface;
+using detail::BasicLayers;
 using detail::bezierOf;
 using detail::checkedLongitudes;
 using detail::defaultRing;
 using detail::lineProfile;
 using detail::matchRingStrict;
 using detail::normalisedRing;
+using detail::RevolvedProfile;
 using detail::revolveRows;
 using detail::ringCuts;
 using detail::sphereProfile;
@@ -122,8 +122,9 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
   const double stripLength = basic.knotsV[out.rowsBasic] - basic.knotsV[out.rowsBasic - 1];
   out.knotsV[out.rowsBasic + 1] = basic.knotsV[out.rowsBasic] + stripLength;
   for (int sp = 0; sp < spansV; ++sp) {
-    out.knotsV[out.rowsBasic + 2 + sp] = out.knotsV[out.rowsBasic + 1 + sp] +
-                                         stripLength * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
+    out.knotsV[out.rowsBasic + 2 + sp] =
+        out.knotsV[out.rowsBasic + 1 + sp] +
+        stripLength * (r->VKnot(sp + 2) - r->VKnot(sp + 1)) / (r->VKnot(2) - r->VKnot(1));
   }
   for (int k = 0; k < out.piecesU; ++k) {
     Homogeneous4 top;
@@ -206,7 +207,8 @@ BlendComplex blendRevolvedNaive(const ShapeFrame& frame, const G2CircleSpline& l
   out.closedU = lon.closed;
   out.rowsBasic = static_cast<int>(profile.cubic.size());
   out.rowsFreeForm = r->NbVKnots() - 1;
-  out.knotsV = Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
+  out.knotsV =
+      Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
   for (int k = 0; k < out.piecesU; ++k) {
     const PointMatrix circle = lon.cubic.middleRows(4 * k, 4);
     Homogeneous4 top, ringBottom;

@@ -18,11 +18,11 @@ namespace fairsplines::detail {
 /// G2 cubic pieces (eq. (2) for circles, degree-raised lines) and as C2 sextic pieces
 /// (Section 4.1), with the interface at its end.
 struct RevolvedProfile {
-  std::vector<Homogeneous3> cubic;   ///< 4 homogeneous rows (rho w, zeta w, w) per piece
-  std::vector<Homogeneous3> sextic;  ///< 7 rows per piece, C2 in homogeneous space
-  Eigen::VectorXd sexticKnots;       ///< pieces + 1 knots of the sextic pieces
-  Eigen::Vector2d end, tangent;      ///< (rho, zeta) at the interface and the unit direction leaving it
-  double size = 1.0;                 ///< length scale of the last piece (for the default ring)
+  std::vector<Homogeneous3> cubic;      ///< 4 homogeneous rows (rho w, zeta w, w) per piece
+  std::vector<Homogeneous3> sextic;     ///< 7 rows per piece, C2 in homogeneous space
+  Eigen::VectorXd sexticKnots;          ///< pieces + 1 knots of the sextic pieces
+  Eigen::Vector2d end, tangent;         ///< (rho, zeta) at the interface and the unit direction leaving it
+  double size = 1.0;                    ///< length scale of the last piece (for the default ring)
   Eigen::Vector2d start, startTangent;  ///< the same at the profile's start (direction leaving it backwards)
   double startSize = 1.0;
 };

@@ -90,8 +90,10 @@ Clothoid clothoidG1(const Eigen::Vector2d& p0, double theta0, const Eigen::Vecto
     double glo = g(lo, nullptr, nullptr);
     for (int k = 0; k < 200 && std::abs(hi - lo) > 1e-15 * (1.0 + std::abs(lo)); ++k) {
       const double m = 0.5 * (lo + hi), gm = g(m, nullptr, nullptr);
-      if ((gm <= 0.0) == (glo <= 0.0)) lo = m, glo = gm;
-      else hi = m;
+      if ((gm <= 0.0) == (glo <= 0.0))
+        lo = m, glo = gm;
+      else
+        hi = m;
     }
     return 0.5 * (lo + hi);
   };

@@ -7,8 +7,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <sstream>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
 #include "fairsplines/bspline.hpp"
@@ -89,8 +89,8 @@ void csrPoles(PointsRef q, const Eigen::VectorXd& h, bool closed, const Weight& 
       // is -(D2_{i-1} - D2_i) h_{i-1}^2 / 3: p_i^L = p_i - (D2_{i-1} - D2_i) h_{i-1}^2 / 3, and
       // likewise p_i^R = p_i - (D2_{i+1} - D2_i) h_i^2 / 3. (At the open ends f_{i-1} = f_i.)
       const double nu_i = weight(km, kp);
-      const double aL = (1.0 - nu_i) * mu_i;    // weight of p_i^L
-      const double aR = nu_i * (1.0 - mu_ip);   // weight of p_i^R
+      const double aL = (1.0 - nu_i) * mu_i;   // weight of p_i^L
+      const double aR = nu_i * (1.0 - mu_ip);  // weight of p_i^R
       outRow(i + offset) = p - ((aL * hm * hm / 3.0) * (fm.D2 - f0.D2) + (aR * h0 * h0 / 3.0) * (fp.D2 - f0.D2));
     }
     if (i == first && !closed) {
@@ -138,8 +138,10 @@ void cubicPolesInto(PointsRef q, const double* t, bool closed, double size, doub
   const Eigen::Map<const Eigen::VectorXd> tv(t, closed ? n + 1 : n);
   const Eigen::VectorXd h = tv.tail(tv.size() - 1) - tv.head(tv.size() - 1);
   PointMatrix p;
-  if (q.cols() == 2) csrPoles<2>(q, h, closed, weight, quasiOnly, p);
-  else csrPoles<3>(q, h, closed, weight, quasiOnly, p);
+  if (q.cols() == 2)
+    csrPoles<2>(q, h, closed, weight, quasiOnly, p);
+  else
+    csrPoles<3>(q, h, closed, weight, quasiOnly, p);
   Eigen::Map<PointMatrix> out(poles, p.rows(), p.cols());
   if (closed) {
     // OCCT's periodic pole j belongs to the basis function starting at knot j - 1: row

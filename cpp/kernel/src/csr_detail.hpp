@@ -22,9 +22,8 @@ CsrStrategy defaultStrategy(Eigen::Index n);
 /// `size` is the data's bounding-box diagonal (epsilon is relative to it). The vectorised
 /// strategy works in windows of `window` points (0: kWindow, as measured fastest; at
 /// least 8). The parameters t become the curve's knots (moved in when given an rvalue).
-BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, double epsilon,
-                      EpsilonRule rule, bool quasiOnly, std::optional<CsrStrategy> strategy = std::nullopt,
-                      Eigen::Index window = 0);
+BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, double epsilon, EpsilonRule rule,
+                      bool quasiOnly, std::optional<CsrStrategy> strategy = std::nullopt, Eigen::Index window = 0);
 
 /// The poles of fitCubic written to `poles` (contiguous rows of q's width: n + 2 for open
 /// data, n for closed data in OCCT's periodic order); t holds n parameters (n + 1 closed).

@@ -39,16 +39,16 @@ inline double weightOf(double a, double b, double epsilon) {
 /// written first. Arrays whose distance is a multiple of 4 KiB alias in the caches when
 /// a loop streams through several at once: the stride is padded by one cache line.
 struct WindowArrays {
-  double* dd[3];     // q_{k+1} - q_k of segment k, then (pass A) divided by h_k
-  double* D2[3];     // f_k''/2 of the quadratic interpolant f_k about t_k
-  double* dv[3];     // f_k'(t_k)
-  double* h;         // h_k = t_{k+1} - t_k
-  double* kappa;     // |curvature| of f_k at t_k
+  double* dd[3];  // q_{k+1} - q_k of segment k, then (pass A) divided by h_k
+  double* D2[3];  // f_k''/2 of the quadratic interpolant f_k about t_k
+  double* dv[3];  // f_k'(t_k)
+  double* h;      // h_k = t_{k+1} - t_k
+  double* kappa;  // |curvature| of f_k at t_k
   static constexpr int kArrays = 11;
 };
 
 class Workspace {
- public:
+public:
   WindowArrays arrays(Eigen::Index capacity) {
     const Eigen::Index stride = (capacity + 7) / 8 * 8 + 8;
     const size_t need = static_cast<size_t>(stride) * WindowArrays::kArrays;
@@ -63,7 +63,7 @@ class Workspace {
     return a;
   }
 
- private:
+private:
   std::vector<double> storage_;
 };
 
@@ -71,8 +71,8 @@ class Workspace {
 /// (W x D) points, per coordinate.
 template <int D>
 inline __attribute__((always_inline)) void differences(const double* __restrict x, Eigen::Index W,
-                                                         double* __restrict ddx, double* __restrict ddy,
-                                                         double* __restrict ddz) {
+                                                       double* __restrict ddx, double* __restrict ddy,
+                                                       double* __restrict ddz) {
   for (Eigen::Index k = 0; k + 1 < W; ++k) {
     ddx[k] = x[D * (k + 1)] - x[D * k];
     ddy[k] = x[D * (k + 1) + 1] - x[D * k + 1];
@@ -92,8 +92,8 @@ inline __attribute__((always_inline)) void differences(const double* __restrict 
 /// the previous strip's additions.
 template <int D, Parametrization kind>
 inline __attribute__((always_inline)) bool differencesAndParameters(const double* __restrict x, Eigen::Index W,
-                                                                      Eigen::Index k0, const WindowArrays& a,
-                                                                      double* __restrict tw, double tol) {
+                                                                    Eigen::Index k0, const WindowArrays& a,
+                                                                    double* __restrict tw, double tol) {
   double* __restrict ddx = a.dd[0];
   double* __restrict ddy = a.dd[1];
   double* __restrict ddz = a.dd[2];
@@ -111,9 +111,12 @@ inline __attribute__((always_inline)) bool differencesAndParameters(const double
     return squared;
   };
   auto step = [](double chord) {
-    if constexpr (kind == Parametrization::Chordal) return chord;
-    else if constexpr (kind == Parametrization::Centripetal) return std::sqrt(chord);
-    else return 1.0;
+    if constexpr (kind == Parametrization::Chordal)
+      return chord;
+    else if constexpr (kind == Parametrization::Centripetal)
+      return std::sqrt(chord);
+    else
+      return 1.0;
   };
   Eigen::Index k = 0;
   for (; k < k0; ++k) {  // known parameters
@@ -155,8 +158,8 @@ inline __attribute__((always_inline)) bool differencesAndParameters(const double
 /// segment.
 template <int D>
 inline __attribute__((always_inline)) void dividedDifferences(const double* __restrict h, Eigen::Index W,
-                                                                double* __restrict ddx, double* __restrict ddy,
-                                                                double* __restrict ddz) {
+                                                              double* __restrict ddx, double* __restrict ddy,
+                                                              double* __restrict ddz) {
   for (Eigen::Index k = 0; k + 1 < W; ++k) {
     const double r = 1.0 / h[k];
     ddx[k] *= r;
@@ -170,10 +173,12 @@ inline __attribute__((always_inline)) void dividedDifferences(const double* __re
 /// all coordinates), and, with `curvature`, |f_k' x f_k''| / |f_k'|^3 at t_k with a single
 /// square root, bounded by boundedCurvature.
 template <int D, bool curvature>
-inline __attribute__((always_inline)) void quadratics(
-    Eigen::Index W, const double* __restrict h, const double* __restrict ddx, const double* __restrict ddy,
-    const double* __restrict ddz, double* __restrict D2x, double* __restrict D2y, double* __restrict D2z,
-    double* __restrict dvx, double* __restrict dvy, double* __restrict dvz, double* __restrict kappa) {
+inline __attribute__((always_inline)) void quadratics(Eigen::Index W, const double* __restrict h,
+                                                      const double* __restrict ddx, const double* __restrict ddy,
+                                                      const double* __restrict ddz, double* __restrict D2x,
+                                                      double* __restrict D2y, double* __restrict D2z,
+                                                      double* __restrict dvx, double* __restrict dvy,
+                                                      double* __restrict dvz, double* __restrict kappa) {
   for (Eigen::Index k = 1; k + 1 < W; ++k) {
     const double hm = h[k - 1], r = 1.0 / (h[k - 1] + h[k]);
     const double bx = (ddx[k] - ddx[k - 1]) * r, by = (ddy[k] - ddy[k - 1]) * r;
@@ -217,7 +222,7 @@ inline __attribute__((always_inline)) void quadratics(
 /// kappa_{k+1}), with the epsilon rule (weightOf).
 template <int D, EpsilonRule rule, bool quasiOnly>
 inline __attribute__((always_inline)) void poles(const double* __restrict x, const WindowArrays& a, Eigen::Index kFrom,
-                                                   Eigen::Index kTo, double epsilon, double* __restrict out) {
+                                                 Eigen::Index kTo, double epsilon, double* __restrict out) {
   const double* __restrict kappa = a.kappa;
   const double* __restrict h = a.h;
   const double* __restrict D2x = a.D2[0];
@@ -257,8 +262,8 @@ inline __attribute__((always_inline)) void poles(const double* __restrict x, con
 /// rowFrom..rowTo to out + D * (row + rowShift).
 template <int D, EpsilonRule rule, bool quasiOnly>
 inline __attribute__((always_inline)) void windowPolesImpl(const double* x, const WindowArrays& a, Eigen::Index W,
-                                                             double epsilon, double* out, Eigen::Index rowShift,
-                                                             Eigen::Index rowFrom, Eigen::Index rowTo) {
+                                                           double epsilon, double* out, Eigen::Index rowShift,
+                                                           Eigen::Index rowFrom, Eigen::Index rowTo) {
   dividedDifferences<D>(a.h, W, a.dd[0], a.dd[1], a.dd[2]);
   quadratics<D, !quasiOnly>(W, a.h, a.dd[0], a.dd[1], a.dd[2], a.D2[0], a.D2[1], a.D2[2], a.dv[0], a.dv[1], a.dv[2],
                             a.kappa);
@@ -296,10 +301,10 @@ inline __attribute__((always_inline)) void windowPolesImpl(const double* x, cons
 /// The instances the strategy runs, each compiled for AVX2 and for the baseline.
 using WindowFunction = void (*)(const double*, const WindowArrays&, Eigen::Index, double, double*, Eigen::Index,
                                 Eigen::Index, Eigen::Index);
-#define FAIRSPLINES_WINDOW(NAME, D, RULE, QUASI)                                                              \
-  FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W, double epsilon,     \
-                                  double* out, Eigen::Index rowShift, Eigen::Index rowFrom, Eigen::Index rowTo) { \
-    windowPolesImpl<D, RULE, QUASI>(x, a, W, epsilon, out, rowShift, rowFrom, rowTo);                         \
+#define FAIRSPLINES_WINDOW(NAME, D, RULE, QUASI)                                                                       \
+  FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W, double epsilon, double* out, \
+                                  Eigen::Index rowShift, Eigen::Index rowFrom, Eigen::Index rowTo) {                   \
+    windowPolesImpl<D, RULE, QUASI>(x, a, W, epsilon, out, rowShift, rowFrom, rowTo);                                  \
   }
 FAIRSPLINES_WINDOW(window2Case, 2, EpsilonRule::CaseDistinction, false)
 FAIRSPLINES_WINDOW(window2Additive, 2, EpsilonRule::Additive, false)
@@ -318,7 +323,7 @@ WindowFunction windowFunction(int dim, EpsilonRule rule, bool quasiOnly) {
 using DifferencesFunction = void (*)(const double*, const WindowArrays&, Eigen::Index);
 #define FAIRSPLINES_DIFFERENCES(NAME, D)                                                    \
   FAIRSPLINES_VECTORISE void NAME(const double* x, const WindowArrays& a, Eigen::Index W) { \
-    differences<D>(x, W, a.dd[0], a.dd[1], a.dd[2]);                                         \
+    differences<D>(x, W, a.dd[0], a.dd[1], a.dd[2]);                                        \
   }
 FAIRSPLINES_DIFFERENCES(differences2, 2)
 FAIRSPLINES_DIFFERENCES(differences3, 3)
@@ -326,10 +331,10 @@ FAIRSPLINES_DIFFERENCES(differences3, 3)
 
 /// differencesAndParameters, compiled likewise.
 using ParametersFunction = bool (*)(const double*, Eigen::Index, Eigen::Index, const WindowArrays&, double*, double);
-#define FAIRSPLINES_PARAMETERS(NAME, D, KIND)                                                                     \
+#define FAIRSPLINES_PARAMETERS(NAME, D, KIND)                                                                          \
   FAIRSPLINES_VECTORISE bool NAME(const double* x, Eigen::Index W, Eigen::Index k0, const WindowArrays& a, double* tw, \
-                                  double tol) {                                                                   \
-    return differencesAndParameters<D, KIND>(x, W, k0, a, tw, tol);                                               \
+                                  double tol) {                                                                        \
+    return differencesAndParameters<D, KIND>(x, W, k0, a, tw, tol);                                                    \
   }
 FAIRSPLINES_PARAMETERS(parameters2Chordal, 2, Parametrization::Chordal)
 FAIRSPLINES_PARAMETERS(parameters2Centripetal, 2, Parametrization::Centripetal)
@@ -341,9 +346,12 @@ FAIRSPLINES_PARAMETERS(parameters3Uniform, 3, Parametrization::Uniform)
 
 ParametersFunction parametersFunction(int dim, Parametrization kind) {
   switch (kind) {
-    case Parametrization::Chordal: return dim == 2 ? parameters2Chordal : parameters3Chordal;
-    case Parametrization::Centripetal: return dim == 2 ? parameters2Centripetal : parameters3Centripetal;
-    default: return dim == 2 ? parameters2Uniform : parameters3Uniform;
+    case Parametrization::Chordal:
+      return dim == 2 ? parameters2Chordal : parameters3Chordal;
+    case Parametrization::Centripetal:
+      return dim == 2 ? parameters2Centripetal : parameters3Centripetal;
+    default:
+      return dim == 2 ? parameters2Uniform : parameters3Uniform;
   }
 }
 

@@ -48,7 +48,8 @@ Plane planeOf(const BlendEnds& e, bool curvaturesGiven) {
   requireFiniteInput(e.normal, "the normal");
   const Vec3 d = e.p1 - e.p0;
   const double scale = std::max(e.p0.cwiseAbs().maxCoeff(), e.p1.cwiseAbs().maxCoeff());
-  if (!(d.norm() > 1e-14 * std::max(scale, 1e-300))) throw InputError("the end points p0 and p1 coincide: a blend needs two points");
+  if (!(d.norm() > 1e-14 * std::max(scale, 1e-300)))
+    throw InputError("the end points p0 and p1 coincide: a blend needs two points");
   if (!(e.t0.norm() > 0.0)) throw InputError("the start tangent t0 is zero");
   if (!(e.t1.norm() > 0.0)) throw InputError("the end tangent t1 is zero");
   const Vec3 u = d.normalized(), a = e.t0.normalized(), b = e.t1.normalized();
@@ -68,8 +69,9 @@ Plane planeOf(const BlendEnds& e, bool curvaturesGiven) {
       p.normal = u.cross(any).normalized();
     } else {
       if (curvaturesGiven) {
-        throw InputError("the ends are not in the XY plane: give the plane normal, which decides the sign of the "
-                         "end curvatures");
+        throw InputError(
+            "the ends are not in the XY plane: give the plane normal, which decides the sign of the "
+            "end curvatures");
       }
       p.normal = n.normalized();
     }
@@ -122,8 +124,8 @@ struct ReferenceCircle {
 // ---------------------------------------------------------------------------------------
 // The C2 cubic following the guide curve (the G1 clothoid, or a G2 spiral).
 
-constexpr int kMaxRounds = 12;   // refinement rounds
-constexpr int kMaxSpans = 400;   // spans at the most
+constexpr int kMaxRounds = 12;       // refinement rounds
+constexpr int kMaxSpans = 400;       // spans at the most
 constexpr double kWorkBudget = 2e6;  // detail::WorkBudget units of one fairBlend
 
 /// End data in the normalized plane (chord from (0, 0) to (1, 0)).
@@ -379,8 +381,8 @@ FairBlend fairBlend(const BlendEnds& ends) {
     const CurvatureTrend wanted = c.dkappa > 0.0 ? CurvatureTrend::Increasing : CurvatureTrend::Decreasing;
     bool proved = false;
     std::tie(local, proved) = certifiedFollow(c, out.turning, e, wanted, true);
-    why << "G1 clothoid (turning " << out.turning * 180.0 / kPi << " degrees) followed by "
-        << local.knots.size() - 1 << " C2 spans";
+    why << "G1 clothoid (turning " << out.turning * 180.0 / kPi << " degrees) followed by " << local.knots.size() - 1
+        << " C2 spans";
     if (!proved) why << ", not all proved monotone";
   } else {
     // The curvatures in chord units: beyond kMaxChordCurvature the radius is below a
@@ -440,13 +442,15 @@ FairBlend fairBlend(const BlendEnds& ends) {
       }
       const Clothoid c = detail::clothoidG1(Vec2::Zero(), theta0, Vec2::UnitX(), theta1);
       consider(c, c.length, c.theta(c.length) - c.theta0, "the G1 clothoid with the given end curvatures");
-      const Fallback& best = *std::min_element(fallbacks.begin(), fallbacks.end(), [](const Fallback& x, const Fallback& y) {
-        return x.extrema != y.extrema ? x.extrema < y.extrema : x.variation < y.variation;
-      });
+      const Fallback& best =
+          *std::min_element(fallbacks.begin(), fallbacks.end(), [](const Fallback& x, const Fallback& y) {
+            return x.extrema != y.extrema ? x.extrema < y.extrema : x.variation < y.variation;
+          });
       local = best.curve;
       out.length = best.length * r;
       out.turning = best.turning;
-      why << "no monotone-curvature curve " << (sol.reason.empty() ? "was found for these G2 ends" : "meets these G2 ends: " + sol.reason)
+      why << "no monotone-curvature curve "
+          << (sol.reason.empty() ? "was found for these G2 ends" : "meets these G2 ends: " + sol.reason)
           << "; the fairest found instead (" << best.what << ", " << best.extrema << " curvature extrema)";
     }
   }
@@ -460,8 +464,10 @@ FairBlend fairBlend(const BlendEnds& ends) {
   out.kappa0 = sign * out.certificate.kappaStart;
   out.kappa1 = sign * out.certificate.kappaEnd;
   out.variation = curvatureVariation(out.curve);
-  if (out.monotone) out.reason += "; curvature " + describeTrend(out.certificate) + ", certified";
-  else out.reason += "; " + out.certificate.reason;  // the certificate says "not monotone: ..."
+  if (out.monotone)
+    out.reason += "; curvature " + describeTrend(out.certificate) + ", certified";
+  else
+    out.reason += "; " + out.certificate.reason;  // the certificate says "not monotone: ..."
   return out;
 }
 

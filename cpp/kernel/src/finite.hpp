@@ -86,8 +86,8 @@ inline void requireSeparateKnots(const Eigen::VectorXd& knots, const std::string
     // Spans of denormal size are refused too: OCCT's knot check (gp::Resolution, the smallest
     // normal double) calls them too close.
     if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp) || !(gap > std::numeric_limits<double>::min())) {
-      throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" +
-                       exactNumber(a) + " and " + exactNumber(b) +
+      throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" + exactNumber(a) +
+                       " and " + exactNumber(b) +
                        ") are too close together (or not increasing): their span is below the precision of the knots");
     }
   }

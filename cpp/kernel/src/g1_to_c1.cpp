@@ -49,7 +49,8 @@ C1QuarticSpline g1ToC1(const PointMatrix& quadratics, const Eigen::VectorXd& bet
                        bool closed) {
   const int n = static_cast<int>(quadratics.rows() / 3);
   if (n < 1 || quadratics.rows() != 3 * n) throw InputError("a G1 quadratic spline needs 3 Bézier points per piece");
-  if (beta.size() != n || betaT.size() != n) throw InputError("one scalar per piece (index i: join of pieces i-1 and i)");
+  if (beta.size() != n || betaT.size() != n)
+    throw InputError("one scalar per piece (index i: join of pieces i-1 and i)");
   requireFinite(quadratics, "the G1 quadratic spline", "Bezier points");
   {
     const int first = closed ? 0 : 1;  // an open spline's scalars 0 are not used

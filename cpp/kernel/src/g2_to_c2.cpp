@@ -118,8 +118,8 @@ Reparam transitionMap(double tau, double tauBar, const Reparam& h, double betaT)
   const double a1 = 2 * (e1 + e3 * nu2 + e4 * d2 * nu2), a2 = -e1 - e3 * nu1 - e4 * d1 * nu1;
   const double nub1 = (2 * e1 + a1 * b) / (2 * e1), nub2 = (e1 + a1 * b + (a1 + a2) * b * b) / e1;
   const double db1 = b * tau * nu2 * (1 - d2) * e2 / (e1 * tauBar * nub1);
-  const double db2 = b * tau * e2 * (2 * nu2 - 2 * d2 * nu2 + (2 * nu2 - 2 * d2 * nu2 - nu1 + d1 * nu1) * b) /
-                     (e1 * tauBar * nub2);
+  const double db2 =
+      b * tau * e2 * (2 * nu2 - 2 * d2 * nu2 + (2 * nu2 - 2 * d2 * nu2 - nu1 + d1 * nu1) * b) / (e1 * tauBar * nub2);
   Reparam hb;
   hb << 0, 1, nub1 * db1, nub1, nub2 * db2, nub2, 1, 1;
   return hb;
@@ -208,7 +208,8 @@ std::vector<Reparam> sigmaRun(const Eigen::VectorXd& theta, const Eigen::VectorX
     Eigen::VectorXd a(n), b(n), c(n);
     Eigen::MatrixXd r(n, 2);
     for (int j = 0; j < n; ++j) {
-      const Eigen::RowVector2d dPrev = j > 0 ? Eigen::RowVector2d(delta(j - 1)) : Eigen::RowVector2d(zeta.row(0) + zeta.row(k - 1));
+      const Eigen::RowVector2d dPrev =
+          j > 0 ? Eigen::RowVector2d(delta(j - 1)) : Eigen::RowVector2d(zeta.row(0) + zeta.row(k - 1));
       // for j = 0: zeta_0 - zeta_{-1} with zeta_{-1} = -zeta_{k-1}
       a[j] = hh(j);
       b[j] = 2 * (hh(j - 1) + hh(j));
@@ -311,7 +312,7 @@ void adjustC2(PointMatrix& left, PointMatrix& right, double beta) {
   // Eq. (5): P = (beta + 1) b_5 - beta b_4, Pbar = ((beta + 1) bbar_1 - bbar_2) / beta.
   const Eigen::RowVectorXd P = (beta + 1) * left.row(5) - beta * left.row(4);
   const Eigen::RowVectorXd Pbar = ((beta + 1) * right.row(1) - right.row(2)) / beta;
-  const Eigen::RowVectorXd Pnew = (P + Pbar) / 2;  // eq. (11)
+  const Eigen::RowVectorXd Pnew = (P + Pbar) / 2;          // eq. (11)
   left.row(5) = (beta * left.row(4) + Pnew) / (beta + 1);  // eq. (6)
   right.row(1) = (beta * Pnew + right.row(2)) / (beta + 1);
   left.row(6) = (beta * left.row(5) + right.row(1)) / (beta + 1);  // eq. (11)
@@ -336,7 +337,8 @@ C2SexticSpline g2ToC2(const PointMatrix& cubicPieces, const std::vector<std::vec
                       const Eigen::VectorXd& betaT, bool closed) {
   const int n = static_cast<int>(cubicPieces.rows() / 4);
   if (n < 1 || cubicPieces.rows() != 4 * n) throw InputError("a G2 cubic spline needs 4 Bézier points per piece");
-  if (static_cast<int>(maps.size()) != n || betaT.size() != n) throw InputError("one map list and one scalar per piece");
+  if (static_cast<int>(maps.size()) != n || betaT.size() != n)
+    throw InputError("one map list and one scalar per piece");
   requireFinite(cubicPieces, "the G2 cubic spline", "Bezier points");
   requireModerateScalars(betaT.tail(closed ? n : n - 1), "the C2 scalar betaT at join");
   C2SexticSpline out;
@@ -412,11 +414,15 @@ CircleMaps circleMapsWith(const G2CircleSpline& circle, const std::vector<Circle
                           const Eigen::VectorXd& betaT) {
   const int n = circle.pieces();
   auto wrap = [&](int i) { return circle.closed ? (i % n + n) % n : i; };
-  auto isSigma = [&](int i) { i = wrap(i); return i >= 0 && i < n && choice[i] == CircleReparam::Sigma; };
+  auto isSigma = [&](int i) {
+    i = wrap(i);
+    return i >= 0 && i < n && choice[i] == CircleReparam::Sigma;
+  };
 
   // Sigma on maximal runs, each from its own tridiagonal system (cyclic for a full circle).
   std::vector<Reparam> sigma(n);
-  const bool allSigma = std::all_of(choice.begin(), choice.end(), [](CircleReparam c) { return c == CircleReparam::Sigma; });
+  const bool allSigma =
+      std::all_of(choice.begin(), choice.end(), [](CircleReparam c) { return c == CircleReparam::Sigma; });
   if (allSigma) {
     sigma = sigmaRun(circle.theta, betaT, circle.closed, 0);
   } else {

@@ -53,7 +53,9 @@ inline Jet chain(const Jet& a, double f, double f1, double f2) {
   r.h = f1 * a.h + f2 * a.g * a.g.transpose();
   return r;
 }
-inline Jet operator/(const Jet& a, const Jet& b) { return a * chain(b, 1.0 / b.v, -1.0 / (b.v * b.v), 2.0 / (b.v * b.v * b.v)); }
+inline Jet operator/(const Jet& a, const Jet& b) {
+  return a * chain(b, 1.0 / b.v, -1.0 / (b.v * b.v), 2.0 / (b.v * b.v * b.v));
+}
 inline Jet sqrt(const Jet& a) {
   const double s = std::sqrt(a.v);
   return chain(a, s, 0.5 / s, -0.25 / (s * a.v));

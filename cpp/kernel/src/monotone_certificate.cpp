@@ -182,10 +182,10 @@ SpanPolys spanPolys(const Arc& arc) {
     s.w = Poly::Ones(1);
   }
   const Poly b1x = diff(bx), b1y = diff(by), b2x = diff(b1x), b2y = diff(b1y);
-  const Poly crossB1 = sub(mul(bx, b1y), mul(by, b1x));   // B x B'
-  const Poly crossB2 = sub(mul(bx, b2y), mul(by, b2x));   // B x B''
-  const Poly dotB1 = mul(bx, b1x) + mul(by, b1y);         // B . B'
-  s.speed2 = mul(bx, bx) + mul(by, by);                   // |B|^2
+  const Poly crossB1 = sub(mul(bx, b1y), mul(by, b1x));  // B x B'
+  const Poly crossB2 = sub(mul(bx, b2y), mul(by, b2x));  // B x B''
+  const Poly dotB1 = mul(bx, b1x) + mul(by, b1y);        // B . B'
+  s.speed2 = mul(bx, bx) + mul(by, by);                  // |B|^2
   // The scale bounds N's two terms and their first-order change when every factor moves
   // by its rounding size: a derivative of degree-d data of coordinates up to X moves by up
   // to 2d X per order (per relTol), the weights by their size. Rounding of the poles, and N
@@ -203,8 +203,8 @@ SpanPolys spanPolys(const Arc& arc) {
     second = 3.0 * mul(mul(arc.w, crossB1), dotB1);
     const double mW1 = w1.cwiseAbs().maxCoeff(), rW = mW, rW1 = growth * mW;
     const double inner = 2.0 * mW1 * mB * mB1 + mW * mB * mB2;
-    const double dInner = 2.0 * (rW1 * mB * mB1 + mW1 * rB * mB1 + mW1 * mB * rB1) +
-                          (rW * mB * mB2 + mW * rB * mB2 + mW * mB * rB2);
+    const double dInner =
+        2.0 * (rW1 * mB * mB1 + mW1 * rB * mB1 + mW1 * mB * rB1) + (rW * mB * mB2 + mW * rB * mB2 + mW * mB * rB2);
     const double firstScale = inner * mB * mB + dInner * mB * mB + inner * 2.0 * mB * rB;
     const double secondScale = 3.0 * (mW * mB * mB * mB1 * mB1 + rW * mB * mB * mB1 * mB1 +
                                       2.0 * mW * rB * mB * mB1 * mB1 + 2.0 * mW * mB * mB * rB1 * mB1);
@@ -260,11 +260,10 @@ SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol, d
   const Bound down = certifyLower(-s.n, tol);  // N <= tol: kappa nonincreasing
   const bool upOk = up.holds && !up.undecided, downOk = down.holds && !down.undecided;
   c.pieces = std::max(up.pieces, down.pieces);
-  const std::string coefficients = "the " + std::to_string(s.n.size()) + " Bernstein coefficients of N (degree " +
-                                   std::to_string(c.degree) + ")";
+  const std::string coefficients =
+      "the " + std::to_string(s.n.size()) + " Bernstein coefficients of N (degree " + std::to_string(c.degree) + ")";
   auto how = [&](const Bound& b) {
-    return b.pieces <= 1 ? coefficients
-                         : "N on all " + std::to_string(b.pieces) + " pieces after subdivision";
+    return b.pieces <= 1 ? coefficients : "N on all " + std::to_string(b.pieces) + " pieces after subdivision";
   };
   if (upOk && downOk) {
     c.trend = CurvatureTrend::Constant;
@@ -272,7 +271,8 @@ SpanCertificate certifySpan(const Arc& arc, const SpanPolys& s, double relTol, d
   } else if (upOk) {
     c.trend = CurvatureTrend::Increasing;
     c.pieces = up.pieces;
-    c.reason = "kappa' >= 0: " + how(up) + " are >= 0; kappa rises from " + num(c.kappa0, 6) + " to " + num(c.kappa1, 6);
+    c.reason =
+        "kappa' >= 0: " + how(up) + " are >= 0; kappa rises from " + num(c.kappa0, 6) + " to " + num(c.kappa1, 6);
   } else if (downOk) {
     c.trend = CurvatureTrend::Decreasing;
     c.pieces = down.pieces;
@@ -346,11 +346,12 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol) {
     const double jumpTol = 1e-9 * std::max(std::abs(left.kappa1), std::abs(right.kappa0)) + kappaFloor;
     if (jump > jumpTol && !jumpUp) {
       jumpUp = true;
-      jumpUpAt = "the curvature jumps up from " + num(left.kappa1, 6) + " to " + num(right.kappa0, 6) + " at u = " + num(u, 6);
+      jumpUpAt =
+          "the curvature jumps up from " + num(left.kappa1, 6) + " to " + num(right.kappa0, 6) + " at u = " + num(u, 6);
     } else if (jump < -jumpTol && !jumpDown) {
       jumpDown = true;
-      jumpDownAt =
-          "the curvature jumps down from " + num(left.kappa1, 6) + " to " + num(right.kappa0, 6) + " at u = " + num(u, 6);
+      jumpDownAt = "the curvature jumps down from " + num(left.kappa1, 6) + " to " + num(right.kappa0, 6) +
+                   " at u = " + num(u, 6);
     }
   }
   if (problem.empty()) {
@@ -380,9 +381,8 @@ MonotonicityCertificate certifyPlanar(const PlanarCurve& curve, double relTol) {
     if (cert.increasing && cert.decreasing) {
       cert.reason = "constant curvature " + num(cert.kappaStart, 6) + " (certified on " + count + ")";
     } else {
-      cert.reason = std::string("monotone: the curvature ") + (cert.increasing ? "increases" : "decreases") +
-                    " from " + num(cert.kappaStart, 6) + " to " + num(cert.kappaEnd, 6) + " (certified on " + count +
-                    ")";
+      cert.reason = std::string("monotone: the curvature ") + (cert.increasing ? "increases" : "decreases") + " from " +
+                    num(cert.kappaStart, 6) + " to " + num(cert.kappaEnd, 6) + " (certified on " + count + ")";
     }
   }
   return cert;
@@ -462,7 +462,8 @@ MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, doub
   const MonotonicityCertificate cert = certifyPlanar(planarCurve(curve), relTol);
   // The boundary rule: no NaN curvature leaves; a curve whose curvatures overflow (or
   // vanish into 0/0) in double precision is refused by name.
-  const char* overflow = "the curve's curvature is not finite in double precision: its poles are too large, too small or too close together";
+  const char* overflow =
+      "the curve's curvature is not finite in double precision: its poles are too large, too small or too close together";
   requireFinite(cert.normal, "the curve", "plane normal");
   if (!std::isfinite(cert.kappaStart) || !std::isfinite(cert.kappaEnd)) throw InputError(overflow);
   for (const SpanCertificate& span : cert.spans) {
@@ -495,7 +496,8 @@ double curvatureVariation(const BSplineCurve& curve) {
   }
   const double variation = energy * length * length * length;
   if (!std::isfinite(variation)) {
-    throw InputError("the curve's curvature variation is not finite in double precision: its poles are too large, too small or too close together");
+    throw InputError(
+        "the curve's curvature variation is not finite in double precision: its poles are too large, too small or too close together");
   }
   return variation;
 }

@@ -39,7 +39,7 @@ struct PlanarCurve {
   int degree = 3;
   bool closed = false;  // periodic: the seam is a joint too
   Vec3 normal = Vec3::UnitZ();
-  double scale = 1.0;   // poles = (model poles - first pole) / scale, a power of two (exact)
+  double scale = 1.0;  // poles = (model poles - first pole) / scale, a power of two (exact)
 };
 
 /// The planar data of a valid curve: its poles in an orthonormal basis of its plane (the
@@ -65,11 +65,11 @@ bool inFairLocation(const Vec2& q, const Vec2& A, const Vec2& D, double slack);
 namespace fairsplines {
 
 // The monotone sources use the shared names unqualified.
-using detail::Vec2;
-using detail::Vec3;
 using detail::cross;
 using detail::degrees;
 using detail::kPi;
 using detail::num;
+using detail::Vec2;
+using detail::Vec3;
 
 }  // namespace fairsplines

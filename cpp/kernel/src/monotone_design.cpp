@@ -18,9 +18,9 @@
 
 namespace fairsplines {
 
-using detail::PlanarCurve;
 using detail::certifyPlanar;
 using detail::inFairLocation;
+using detail::PlanarCurve;
 using detail::polesOf;
 
 namespace {
@@ -139,8 +139,9 @@ Classified classify(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& 
   n.T = Vec2(n.d1.dot(n.e1), n.d1.dot(n.e2)).normalized();
   ec.turn = std::atan2(n.T.y(), n.T.x());
   if (std::abs(n.T.y()) <= 1e-14) {
-    ec.reason = "the end tangents are parallel and p1 is off the start tangent: that needs an inflection or a "
-                "U-turn, but curves of this family turn less than 90 deg one way";
+    ec.reason =
+        "the end tangents are parallel and p1 is off the start tangent: that needs an inflection or a "
+        "U-turn, but curves of this family turn less than 90 deg one way";
     return out;
   }
   const double sinTurn = n.T.y();
@@ -151,11 +152,13 @@ Classified classify(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& 
     return out;
   }
   if (ec.a <= 0.0 || ec.b <= 0.0) {
-    std::string where = ec.a <= 0.0 ? "it lies " + num(-ec.a) + " behind p0 along t0"
-                                    : "it lies " + num(-ec.b) + " beyond p1 along t1";
+    std::string where =
+        ec.a <= 0.0 ? "it lies " + num(-ec.a) + " behind p0 along t0" : "it lies " + num(-ec.b) + " beyond p1 along t1";
     if (ec.a <= 0.0 && ec.b <= 0.0) where = "it lies behind p0 along t0 and beyond p1 along t1";
-    ec.reason = "the tangents' intersection lies outside the admissible wedge: it must lie ahead of p0 along t0 "
-                "and before p1 along t1, but " + where + " (these ends need an inflection)";
+    ec.reason =
+        "the tangents' intersection lies outside the admissible wedge: it must lie ahead of p0 along t0 "
+        "and before p1 along t1, but " +
+        where + " (these ends need an inflection)";
     return out;
   }
   if (n.T.x() <= 0.0) {
@@ -170,9 +173,11 @@ Classified classify(const Vec3& p0, const Vec3& t0, const Vec3& p1, const Vec3& 
   } else if (ec.b <= ec.a * cosTurn * (1 + slack)) {
     ec.admissible = ec.reversed = true;
   } else {
-    ec.reason = "the tangents' intersection M is too central: |M - p0| = " + num(ec.a) + " and |p1 - M| = " +
-                num(ec.b) + ", but a curve of this family with monotone curvature needs the shorter of the two at "
-                "most the longer times cos(turn) = " + num(std::max(ec.a, ec.b) * cosTurn) +
+    ec.reason = "the tangents' intersection M is too central: |M - p0| = " + num(ec.a) +
+                " and |p1 - M| = " + num(ec.b) +
+                ", but a curve of this family with monotone curvature needs the shorter of the two at "
+                "most the longer times cos(turn) = " +
+                num(std::max(ec.a, ec.b) * cosTurn) +
                 " (the limit is a parabola from its vertex; these ends ask for a curve nearer to a circular arc)";
   }
   return out;
@@ -243,14 +248,15 @@ PointMatrix toModel(const std::array<Vec2, 5>& c, const Normalized& n) {
 // ---------------------------------------------------------------------------------------
 // Algorithm 1.
 
-MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef differences,
-                              const Eigen::VectorXd& knotsIn, const Eigen::Vector2d& start) {
+MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef differences, const Eigen::VectorXd& knotsIn,
+                              const Eigen::Vector2d& start) {
   if (!firstVector.allFinite()) throw InputError("the first control vector is not finite");
   if (!(firstVector.cwiseAbs().maxCoeff() > 0.0)) throw InputError("the first control vector is zero");
   if (!start.allFinite()) throw InputError("the start point is not finite");
   if (differences.cols() != 2) throw InputError("the differences dV_i must be 2D vectors (rows of 2 numbers)");
   const Eigen::Index m = differences.rows();
-  if (m < 2) throw InputError("Algorithm 1 needs at least 2 differences dV_i (4 control points), got " + std::to_string(m));
+  if (m < 2)
+    throw InputError("Algorithm 1 needs at least 2 differences dV_i (4 control points), got " + std::to_string(m));
   for (Eigen::Index i = 0; i < m; ++i) {
     if (!differences.row(i).allFinite()) throw InputError("dV_" + std::to_string(i) + " is not finite");
   }
@@ -266,13 +272,15 @@ MonotoneDesign designMonotone(const Eigen::Vector2d& firstVector, PointsRef diff
   }
   for (Eigen::Index i = 0; i < t.size(); ++i) {
     if (!std::isfinite(t[i])) throw InputError("knot " + std::to_string(i) + " is not finite");
-    if (i > 0 && t[i] < t[i - 1]) throw InputError("knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " decrease");
+    if (i > 0 && t[i] < t[i - 1])
+      throw InputError("knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " decrease");
   }
   for (Eigen::Index i = 0; i + 4 < t.size(); ++i) {
     if (!(t[i + 4] > t[i])) throw InputError("knot " + std::to_string(i) + " has multiplicity above 4");
   }
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (!(t[i + 4] > t[i + 1])) throw InputError("knots t_" + std::to_string(i + 1) + " .. t_" + std::to_string(i + 4) + " coincide");
+    if (!(t[i + 4] > t[i + 1]))
+      throw InputError("knots t_" + std::to_string(i + 1) + " .. t_" + std::to_string(i + 4) + " coincide");
     if (i + 1 < n && !(t[i + 4] > t[i + 2])) {
       throw InputError("knots t_" + std::to_string(i + 2) + " .. t_" + std::to_string(i + 4) + " coincide");
     }
@@ -359,9 +367,8 @@ EndConditions analyzeEndConditions(const Eigen::Vector3d& p0, const Eigen::Vecto
   return classify(p0, t0, p1, t1).ec;
 }
 
-MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0,
-                                       const Eigen::Vector3d& p1, const Eigen::Vector3d& t1, MonotoneMethod method,
-                                       double gridStep) {
+MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0, const Eigen::Vector3d& p1,
+                                       const Eigen::Vector3d& t1, MonotoneMethod method, double gridStep) {
   // The search visits up to (0.5 / step)^4 points: the lower bound keeps it within seconds.
   if (method == MonotoneMethod::PaperGrid && !(gridStep >= kMinGridStep && gridStep <= 0.5)) {
     throw InputError("the grid step must be in [" + num(kMinGridStep) + ", 0.5] (the search grows as step^-4), got " +

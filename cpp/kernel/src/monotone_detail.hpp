@@ -28,8 +28,7 @@ std::optional<Eigen::Vector4d> interiorStart(const Eigen::Vector2d& P, const Eig
 
 /// Damped Newton (exact second derivatives) for the analytic centre from an interior point;
 /// every iterate stays interior. `iterations` receives the number of Newton steps.
-Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Eigen::Vector2d& P, const Eigen::Vector2d& T,
-                               int& iterations);
+Eigen::Vector4d analyticCentre(Eigen::Vector4d x, const Eigen::Vector2d& P, const Eigen::Vector2d& T, int& iterations);
 
 /// The normalized poles C_0..C_4 of x (C_0 = 0, C_4 = P): C_1 = (s / 3, 0), C_2 = C_1 + D_1 / 1.5,
 /// C_3 = P - lambda T / 3.

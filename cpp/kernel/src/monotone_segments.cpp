@@ -15,8 +15,8 @@
 
 namespace fairsplines {
 
-using detail::PlanarCurve;
 using detail::inFairLocation;
+using detail::PlanarCurve;
 using detail::planarCurve;
 
 // ---------------------------------------------------------------------------------------
@@ -38,7 +38,8 @@ Eigen::VectorXd flatKnots(const BSplineCurve& curve) {
 }
 
 DerivativePolygons derivativePolygons(const BSplineCurve& cubic) {
-  if (cubic.degree != 3) throw InputError("eqs. (3) and (5) are for cubic B-splines, got degree " + std::to_string(cubic.degree));
+  if (cubic.degree != 3)
+    throw InputError("eqs. (3) and (5) are for cubic B-splines, got degree " + std::to_string(cubic.degree));
   if (cubic.isRational()) throw InputError("eqs. (3) and (5) are for non-rational B-splines");
   requireValidCurve(cubic, "the cubic");
   const Eigen::VectorXd t = flatKnots(cubic);
@@ -47,13 +48,15 @@ DerivativePolygons derivativePolygons(const BSplineCurve& cubic) {
   out.first.resize(n - 1, cubic.poles.cols());
   for (Eigen::Index i = 0; i + 1 < n; ++i) {
     const double h = t[i + 4] - t[i + 1];
-    if (!(h > 0)) throw InputError("knots t_" + std::to_string(i + 1) + " and t_" + std::to_string(i + 4) + " coincide");
+    if (!(h > 0))
+      throw InputError("knots t_" + std::to_string(i + 1) + " and t_" + std::to_string(i + 4) + " coincide");
     out.first.row(i) = 3.0 / h * (cubic.poles.row(i + 1) - cubic.poles.row(i));  // eq. (3)
   }
   out.second.resize(std::max<Eigen::Index>(n - 2, 0), cubic.poles.cols());
   for (Eigen::Index i = 0; i + 2 < n; ++i) {
     const double h = t[i + 4] - t[i + 2];
-    if (!(h > 0)) throw InputError("knots t_" + std::to_string(i + 2) + " and t_" + std::to_string(i + 4) + " coincide");
+    if (!(h > 0))
+      throw InputError("knots t_" + std::to_string(i + 2) + " and t_" + std::to_string(i + 4) + " coincide");
     out.second.row(i) = 2.0 / h * (out.first.row(i + 1) - out.first.row(i));  // eq. (5)
   }
   // Poles far apart over short knot spans overflow the derivatives' control points.
@@ -134,7 +137,7 @@ std::string describe(const SegmentCheck& check) {
   }
   if (!check.lemma3) {
     return check.slopeOrder == 1 ? "Lemma 3 fails: slope(O C^1_{j-2}) > slope(O C^2_{j-2})"
-                                  : "Lemma 3 fails: slope(O C^2_{j-2}) > slope(O C^2_{j-3})";
+                                 : "Lemma 3 fails: slope(O C^2_{j-2}) > slope(O C^2_{j-3})";
   }
   return std::string("Theorem 1 holds (") + (check.turn > 0 ? "left" : "right") +
          " turn): |kappa| does not increase on the segment" +

@@ -189,8 +189,8 @@ void checkShape(PointsRef q, bool closed, int minPoints, const char* method) {
   }
   if (n < minPoints || n < 1) {
     std::ostringstream msg;
-    msg << method << " needs at least " << minPoints << (closed ? " points on a closed curve" : " points")
-        << ", got " << n;
+    msg << method << " needs at least " << minPoints << (closed ? " points on a closed curve" : " points") << ", got "
+        << n;
     throw InputError(msg.str());
   }
 }
@@ -208,7 +208,8 @@ double openSampleSize(PointsRef q, int minPoints, const char* method) {
   checkShape(q, false, minPoints, method);
   if (q.outerStride() != q.cols()) return openSampleSize(PointMatrix(q), minPoints, method);
   double lo[3], hi[3];
-  const bool finite = q.cols() == 2 ? finiteBox<2>(q.data(), q.rows(), lo, hi) : finiteBox<3>(q.data(), q.rows(), lo, hi);
+  const bool finite =
+      q.cols() == 2 ? finiteBox<2>(q.data(), q.rows(), lo, hi) : finiteBox<3>(q.data(), q.rows(), lo, hi);
   if (!finite) throwNotFinite(q);
   return q.cols() == 2 ? checkedSize<2>(lo, hi) : checkedSize<3>(lo, hi);
 }
@@ -231,8 +232,10 @@ void parametersInto(const double* chords, Eigen::Index count, Parametrization ki
   // Reads chord i before writing t[i + 1]: chords may be t + 1.
   for (Eigen::Index i = 0; i < count; ++i) {
     double h = 1.0;
-    if (kind == Parametrization::Chordal) h = chords[i];
-    else if (kind == Parametrization::Centripetal) h = std::sqrt(chords[i]);
+    if (kind == Parametrization::Chordal)
+      h = chords[i];
+    else if (kind == Parametrization::Centripetal)
+      h = std::sqrt(chords[i]);
     t[i + 1] = t[i] + h;
   }
 }

@@ -1,9 +1,9 @@
 // Monotone spirals for G2 ends; see spiral.hpp.
 #include "spiral.hpp"
 
+#include "fairsplines/errors.hpp"
 #include "clothoid.hpp"
 #include "work_budget.hpp"
-#include "fairsplines/errors.hpp"
 
 #include <algorithm>
 #include <array>
@@ -196,12 +196,14 @@ static std::string circleReason(double theta0, double k0, double theta1, double 
     const double r0 = 1.0 / std::abs(k0), r1 = 1.0 / std::abs(k1), d = (c1 - c0).norm();
     if (!inflection && !(d < std::abs(r0 - r1))) {
       return "the osculating circles at the ends (radii " + num(r0) + " and " + num(r1) + " chord lengths, centres " +
-             num(d) + " apart) are not nested: along a curve whose curvature runs one way without inflection each "
+             num(d) +
+             " apart) are not nested: along a curve whose curvature runs one way without inflection each "
              "osculating circle lies inside the one before (Tait-Kneser)";
     }
     if (inflection && !(d > r0 + r1)) {
       return "the osculating circles at the ends (radii " + num(r0) + " and " + num(r1) + " chord lengths, centres " +
-             num(d) + " apart) overlap: a curve whose curvature runs one way through one inflection has them on the "
+             num(d) +
+             " apart) overlap: a curve whose curvature runs one way through one inflection has them on the "
              "two sides of its inflection tangent";
     }
     return "";
@@ -291,9 +293,9 @@ Candidate newton(Spiral s, double Theta) {
 /// towards the end (1) or the start (2), or steps at the two ends (3, like a triarc). A weak
 /// pull (mu from 1e-4 to 1e-8) lets the steps go far from equal: the last resort, for ends
 /// whose curvature must change almost all at once. nullopt where it does not reach the ends.
-std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n, int profile,
-                                             bool weakPull) {
-  const int m = n;  // parameters
+std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1, double Theta, double L0, int n,
+                                             int profile, bool weakPull) {
+  const int m = n;                             // parameters
   constexpr double kFloor = 1.25 * kMinSlope;  // every step at least kFloor / n: n step >= kFloor
   auto build = [&](const Eigen::VectorXd& x) {
     ClothoidSpline c;
@@ -330,8 +332,8 @@ std::optional<ClothoidSpline> clothoidSpline(double theta0, double k0, double k1
     if (profile == 2) x[i] = -3.0 * i / (n - 1.0);
     if (profile == 3) x[i] = i == n - 1 ? 0.0 : -3.0;
   }
-  const std::array<double, 3> pulls = weakPull ? std::array<double, 3>{1e-4, 1e-6, 1e-8}
-                                              : std::array<double, 3>{1e-2, 1e-4, 1e-6};
+  const std::array<double, 3> pulls =
+      weakPull ? std::array<double, 3>{1e-4, 1e-6, 1e-8} : std::array<double, 3>{1e-2, 1e-4, 1e-6};
   for (double mu : pulls) {
     double lambda = 1e-3;
     Eigen::VectorXd r = residuals(x, mu);
@@ -406,7 +408,7 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
   // Newton from the length L (a from the turning, b = 0); true when it ends monotone.
   auto tryLength = [&](double Theta, double L) {
     if (!(std::abs(Theta) < 2.0 * kPi)) return false;  // a blend turns less than a full turn
-    if (!(L > 1.0 && L < 1e4)) return false;          // longer than the chord, and not absurdly long
+    if (!(L > 1.0 && L < 1e4)) return false;           // longer than the chord, and not absurdly long
     Spiral s;
     s.theta0 = theta0, s.k0 = k0, s.k1 = k1, s.length = L;
     const Candidate c = newton(s, Theta);
@@ -429,7 +431,8 @@ SpiralSolution solveG2Spiral(double theta0, double k0, double theta1, double k1)
         return out;
       }
     }
-    out.reason = "the end curvatures are equal (" + num(k) + " per chord length), so a curve whose curvature runs "
+    out.reason = "the end curvatures are equal (" + num(k) +
+                 " per chord length), so a curve whose curvature runs "
                  "one way between them is a circle arc, and no circle of that curvature meets both ends";
     // The fairest curve with one bump of curvature between them, for the report.
     for (double L : {g1.length, 1.05, 1.3, 2.0}) tryLength(g1Turning, L);

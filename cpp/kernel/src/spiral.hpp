@@ -39,16 +39,16 @@ struct ClothoidSpline {
   double kappa(double s) const;
   double theta(double s) const;
   Eigen::Vector2d point(double s) const;
-  double minSlope() const;  ///< n min_i (C_i - C_{i-1}): the least c' of the profile
-  double variation() const; ///< L^2 (k1 - k0)^2 n sum (C_i - C_{i-1})^2
+  double minSlope() const;   ///< n min_i (C_i - C_{i-1}): the least c' of the profile
+  double variation() const;  ///< L^2 (k1 - k0)^2 n sum (C_i - C_{i-1})^2
 };
 
 /// The outcome of the G2 problem in the chord frame (p0 = (0, 0), p1 = (1, 0)).
 struct SpiralSolution {
-  std::optional<Spiral> monotone;         ///< the fairest cubic-profile solution with minSlope >= kMinSlope
-  std::optional<ClothoidSpline> spline;   ///< else a monotone clothoid spline, if one was found
-  std::optional<Spiral> fallback;         ///< else the fairest solution found (curvature not monotone)
-  std::string reason;                     ///< why no monotone curve exists (a necessary condition fails), or ""
+  std::optional<Spiral> monotone;        ///< the fairest cubic-profile solution with minSlope >= kMinSlope
+  std::optional<ClothoidSpline> spline;  ///< else a monotone clothoid spline, if one was found
+  std::optional<Spiral> fallback;        ///< else the fairest solution found (curvature not monotone)
+  std::string reason;                    ///< why no monotone curve exists (a necessary condition fails), or ""
 };
 
 /// The least minSlope a solution must keep to count as monotone: the cubic that follows it

@@ -25,8 +25,8 @@ PointMatrix tensorControlNet(const PointMatrix& bezier, int nI, int nJ, const Ei
       auto b = [&](int r, int s) { return bezier.row(base + 4 * r + s); };
       const double bu = betaU[i], bv = betaV[j];
       // Eq. (11): the left form of eq. (3) in each variable.
-      c.row((i - 1) * nJ + (j - 1)) = bu * bv * b(1, 1) - bu * (1 + bv) * b(1, 2) - (1 + bu) * bv * b(2, 1) +
-                                      (1 + bu) * (1 + bv) * b(2, 2);
+      c.row((i - 1) * nJ + (j - 1)) =
+          bu * bv * b(1, 1) - bu * (1 + bv) * b(1, 2) - (1 + bu) * bv * b(2, 1) + (1 + bu) * (1 + bv) * b(2, 2);
     }
   }
   return c;

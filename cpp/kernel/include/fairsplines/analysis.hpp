@@ -1,11 +1,11 @@
 // Curve analysis shared by every capability: curvature samples, sign changes,
 // extrema, distance to data. Works on any OCCT B-spline curve.
 #pragma once
-#include <optional>
-#include <vector>
 #include <Eigen/Core>
 #include <Geom_BSplineCurve.hxx>
 #include <gp_Vec.hxx>
+#include <optional>
+#include <vector>
 #include "fairsplines/types.hpp"
 
 namespace fairsplines {
@@ -28,7 +28,7 @@ struct CurvatureProfile {
   Eigen::VectorXd s;      ///< arc length from the start
   Eigen::VectorXd kappa;  ///< curvature, signed when `isSigned`
   bool isSigned = false;
-  gp_Vec normal;          ///< plane normal the sign refers to (when isSigned)
+  gp_Vec normal;  ///< plane normal the sign refers to (when isSigned)
 };
 
 /// Curvature at n parameters spread over the curve: every knot span gets samples in

@@ -19,16 +19,16 @@ namespace fairsplines {
 /// Patch (i, j) is the tensor product of arc i and profile piece j (revolveRows).
 struct G1RevolvedShape {
   ShapeFrame frame;
-  Eigen::VectorXd theta;     ///< angles around the axis (arc i: theta[i] .. theta[i+1])
-  PointMatrix circle;        ///< 3 homogeneous rows (x w, y w, w) per arc, unit circle
-  Eigen::VectorXd beta;      ///< G1 scalars around the axis (beta[i] between arcs i-1 and i)
-  bool closedU = false;      ///< a full turn
-  std::vector<Homogeneous3> profile;  ///< 3 rows (rho w, zeta w, w) per profile piece
-  Eigen::VectorXd profileBeta;        ///< G1 scalars of the profile (beta[j] between j-1 and j)
-  bool profileIsLine = false;         ///< lines: the profile is C1 over profileKnots as it is
-  Eigen::VectorXd profileKnots;       ///< lines: the heights (from 0); circles: 0, 1, ..., m
-  Eigen::Vector2d end, tangent;       ///< (rho, zeta) at the profile's end, unit direction leaving it
-  double size = 1.0;                  ///< length of the last profile piece (for the default ring)
+  Eigen::VectorXd theta;                ///< angles around the axis (arc i: theta[i] .. theta[i+1])
+  PointMatrix circle;                   ///< 3 homogeneous rows (x w, y w, w) per arc, unit circle
+  Eigen::VectorXd beta;                 ///< G1 scalars around the axis (beta[i] between arcs i-1 and i)
+  bool closedU = false;                 ///< a full turn
+  std::vector<Homogeneous3> profile;    ///< 3 rows (rho w, zeta w, w) per profile piece
+  Eigen::VectorXd profileBeta;          ///< G1 scalars of the profile (beta[j] between j-1 and j)
+  bool profileIsLine = false;           ///< lines: the profile is C1 over profileKnots as it is
+  Eigen::VectorXd profileKnots;         ///< lines: the heights (from 0); circles: 0, 1, ..., m
+  Eigen::Vector2d end, tangent;         ///< (rho, zeta) at the profile's end, unit direction leaving it
+  double size = 1.0;                    ///< length of the last profile piece (for the default ring)
   Eigen::Vector2d start, startTangent;  ///< the same at the profile's start (direction leaving it backwards)
   double startSize = 1.0;
   int piecesU() const { return static_cast<int>(circle.rows() / 3); }

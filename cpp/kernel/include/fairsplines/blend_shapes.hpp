@@ -26,8 +26,8 @@ struct G2CircleSpline {
   /// beta_i, gamma_i of eqs. (3)-(4) between piece i-1 and piece i, index i = 0..n-1;
   /// index 0 is the closing join (last piece to first) of a closed circle, else beta 1, gamma 0.
   Eigen::VectorXd beta, gamma;
-  bool closed = false;   ///< theta_n - theta_0 = 2 pi
-  Homogeneous3 cubic;    ///< 4 n rows: homogeneous Bézier points of piece i at rows 4 i .. 4 i + 3
+  bool closed = false;  ///< theta_n - theta_0 = 2 pi
+  Homogeneous3 cubic;   ///< 4 n rows: homogeneous Bézier points of piece i at rows 4 i .. 4 i + 3
 
   int pieces() const { return static_cast<int>(alpha.size()); }
   /// The rational quadratic (conic) of piece i, 3 homogeneous rows (weights 1, cos(alpha_i/2), 1);

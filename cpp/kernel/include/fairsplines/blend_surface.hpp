@@ -36,7 +36,7 @@ struct BlendComplex {
   /// shape's top row, and the ring's first span that length again).
   Eigen::VectorXd knotsV;
   int piecesU = 0, rowsBasic = 0, rowsFreeForm = 0;
-  int rowsTransition = 1;   ///< transition rows between them: 1 (Section 4.2) or 2 (the double strip of Section 5)
+  int rowsTransition = 1;  ///< transition rows between them: 1 (Section 4.2) or 2 (the double strip of Section 5)
   bool closedU = true;
   bool basicC2InV = false;  ///< basic rows converted to C2 sextics across the interface too
   int smoothness = 2;       ///< the continuity the complex is built for: 2 (Section 4.2) or 1 (Section 5)
@@ -105,7 +105,7 @@ BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, co
 BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                         const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho,
                         Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = false, bool naive = false,
-                       Interface at = Interface::End);
+                        Interface at = Interface::End);
 
 /// The u knots (one period) a free-form ring must have: arcKnots of the C2 circle.
 /// Throws the InputError of g2Circle and circleToC2 for the longitudes.
@@ -140,8 +140,8 @@ struct ShapeOfRevolution {
   enum class Kind { SphereZone, Cone, Torus };  ///< a cylinder is a cone with slope 0
   Kind kind = Kind::SphereZone;
   ShapeFrame frame;
-  double size0 = 1.0;  ///< sphere: radius; cone: radius0 (at height 0); torus: major radius R
-  double size1 = 0.0;  ///< sphere: unused; cone: slope; torus: minor radius r
+  double size0 = 1.0;       ///< sphere: radius; cone: radius0 (at height 0); torus: major radius R
+  double size1 = 0.0;       ///< sphere: unused; cone: slope; torus: minor radius r
   Eigen::VectorXd around;   ///< angles around the axis (a full turn)
   Eigen::VectorXd profile;  ///< latitudes, heights or tube angles
 };
@@ -159,8 +159,8 @@ struct ShapeOfRevolution {
 /// G2 complexes (cubic in u, a (3,5) strip, no reparameterization). Throws InputError for
 /// different arc counts, partial turns, an interface on the axis or the other checks of the
 /// shapes.
-BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b, CircleReparam method = CircleReparam::Rho,
-                        bool sexticInV = true, bool naive = false);
+BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b,
+                        CircleReparam method = CircleReparam::Rho, bool sexticInV = true, bool naive = false);
 
 /// Section 4.2 for an edited control structure (Figs. 1c/d, 4a): `edited` is the shape's
 /// G2Surface (sphereZone, cylinder, cone, torus of the same angles) with control points and
@@ -188,9 +188,10 @@ struct BlendShell {
   TopoDS_Shell shell;
   double maxGap = 0.0;     ///< largest distance between two patches along a shared edge or at a shared corner
   double tolerance = 0.0;  ///< the edges' least tolerance (Precision::Confusion(), more for huge coordinates)
-  double allowedGap = 0.0; ///< the largest gap accepted: 1e-9 of the complex's size plus 1e-13 of its largest coordinate
-  int freeEdges = 0;       ///< edges on one face only, degenerated ones not counted (0: the shell is closed)
-  int degenerated = 0;     ///< patch sides collapsed to a point (a pole row)
+  double allowedGap =
+      0.0;              ///< the largest gap accepted: 1e-9 of the complex's size plus 1e-13 of its largest coordinate
+  int freeEdges = 0;    ///< edges on one face only, degenerated ones not counted (0: the shell is closed)
+  int degenerated = 0;  ///< patch sides collapsed to a point (a pole row)
 };
 
 /// The complex's patches as one shell with the topology of its grid, without sewing: one

@@ -15,12 +15,12 @@ using HomogeneousPoints = Eigen::Matrix<double, Eigen::Dynamic, 4, Eigen::RowMaj
 /// One basic piece of a design, as control polygon of a clamped rational cubic C2 spline
 /// over its marks u_0 = 0 < u_1 < ... < u_m = 1.
 struct PiecePolygon {
-  Eigen::VectorXd marks;   ///< u_0 .. u_m (m + 1 values)
-  HomogeneousPoints start; ///< F[0,0,0], F[0,0,u_1]: the end extension (10) at u = 0
-  HomogeneousPoints inner; ///< c_i for i = 1..m-1, corresponding to the knot u_i
-  HomogeneousPoints end;   ///< F[u_{m-1},1,1], F[1,1,1]: the end extension at u = 1
-  bool exact = false;      ///< Section 6 (exact) or Section 5 (approximation)
-  int marksAdded = 0;      ///< marks inserted to keep every weight positive
+  Eigen::VectorXd marks;    ///< u_0 .. u_m (m + 1 values)
+  HomogeneousPoints start;  ///< F[0,0,0], F[0,0,u_1]: the end extension (10) at u = 0
+  HomogeneousPoints inner;  ///< c_i for i = 1..m-1, corresponding to the knot u_i
+  HomogeneousPoints end;    ///< F[u_{m-1},1,1], F[1,1,1]: the end extension at u = 1
+  bool exact = false;       ///< Section 6 (exact) or Section 5 (approximation)
+  int marksAdded = 0;       ///< marks inserted to keep every weight positive
 };
 
 /// Checks marks given by a designer: finite, inside [0, 1], strictly increasing. Marks
@@ -68,9 +68,9 @@ struct PieceRange {
 };
 
 struct Design {
-  BSplineCurve curve;               ///< rational (or polynomial) clamped cubic, C2
-  std::vector<JoinKind> joins;      ///< one per consecutive pair of pieces
-  std::vector<PieceRange> ranges;   ///< one per piece
+  BSplineCurve curve;              ///< rational (or polynomial) clamped cubic, C2
+  std::vector<JoinKind> joins;     ///< one per consecutive pair of pieces
+  std::vector<PieceRange> ranges;  ///< one per piece
 };
 
 /// Fig. 9: one C2 cubic NURBS from the pieces' polygons. Between pieces the end points

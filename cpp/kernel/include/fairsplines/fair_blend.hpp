@@ -14,9 +14,9 @@
 // the report gives that variation for every result. docs/FAIR_BLENDS.md has the
 // derivation, the refusals and the measured coverage.
 #pragma once
+#include <Eigen/Core>
 #include <limits>
 #include <string>
-#include <Eigen/Core>
 #include "fairsplines/monotone.hpp"
 #include "fairsplines/types.hpp"
 
@@ -35,16 +35,16 @@ struct BlendEnds {
 };
 
 struct FairBlend {
-  BSplineCurve curve;                     ///< planar cubic, 3 columns, clamped, C2 inside
-  MonotonicityCertificate certificate;    ///< the exact certificate of `curve`
-  bool monotone = false;                  ///< certificate.monotone
+  BSplineCurve curve;                                 ///< planar cubic, 3 columns, clamped, C2 inside
+  MonotonicityCertificate certificate;                ///< the exact certificate of `curve`
+  bool monotone = false;                              ///< certificate.monotone
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< the plane normal curvatures refer to
-  double kappa0 = 0.0, kappa1 = 0.0;      ///< end curvatures of `curve`, signed about `normal`
-  double turning = 0.0;                   ///< total tangent turning, radians, signed about `normal`
-  double length = 0.0;                    ///< arc length of the clothoid followed
-  double variation = 0.0;                 ///< L^3 int (dkappa/ds)^2 ds of `curve` (curvatureVariation)
+  double kappa0 = 0.0, kappa1 = 0.0;                  ///< end curvatures of `curve`, signed about `normal`
+  double turning = 0.0;                               ///< total tangent turning, radians, signed about `normal`
+  double length = 0.0;                                ///< arc length of the clothoid followed
+  double variation = 0.0;                             ///< L^3 int (dkappa/ds)^2 ds of `curve` (curvatureVariation)
   int spans = 0;
-  std::string reason;                     ///< how it was found, or why it is not monotone
+  std::string reason;  ///< how it was found, or why it is not monotone
 };
 
 /// The fair blend of two ends, never NaN geometry.

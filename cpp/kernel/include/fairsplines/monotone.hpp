@@ -6,9 +6,9 @@
 // any planar polynomial or rational B-spline, and a solver for the fairest curve of the
 // family (the analytic centre of its admissible set, see MonotoneMethod::Fairest).
 #pragma once
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-#include <Eigen/Core>
 #include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
 
@@ -42,16 +42,19 @@ DerivativePolygons derivativePolygons(const BSplineCurve& cubic);
 /// right (derivative polygons in the fourth quadrant) is checked as its mirror image.
 /// When they hold, |kappa| does not increase along the segment (Theorem 1).
 struct SegmentCheck {
-  int turn = 0;            ///< +1: first quadrant (left turn), -1: fourth quadrant (right turn), 0: neither
-  bool lemma1 = false;     ///< C^1_{j-3..j-1}, C^2_{j-3..j-2} in one quadrant: |P'| does not decrease
-  bool lemma2 = false;     ///< angle O C^2_{j-2} C^2_{j-3} >= 90 deg: |P''| does not increase
-  bool lemma3 = false;     ///< slope(O C^1_{j-2}) <= slope(O C^2_{j-2}) <= slope(O C^2_{j-3}): sin of their angle does not increase
+  int turn = 0;         ///< +1: first quadrant (left turn), -1: fourth quadrant (right turn), 0: neither
+  bool lemma1 = false;  ///< C^1_{j-3..j-1}, C^2_{j-3..j-2} in one quadrant: |P'| does not decrease
+  bool lemma2 = false;  ///< angle O C^2_{j-2} C^2_{j-3} >= 90 deg: |P''| does not increase
+  bool lemma3 =
+      false;  ///< slope(O C^1_{j-2}) <= slope(O C^2_{j-2}) <= slope(O C^2_{j-3}): sin of their angle does not increase
   bool fairLocation = false;  ///< Theorem 2 (i): C^2_{j-2} inside the fair location of Fig. 3
-  bool theorem2 = false;   ///< Theorem 2: (i) fair location, (ii) slope(O C^1_{j-2}) <= slope(O C^2_{j-3}), (iii) one quadrant
-  bool degenerate = false; ///< the first control vector of the segment is zero: no local frame
-  int offQuadrant = -1;    ///< Lemma 1 failure: 0 C^1_{j-2}, 1 C^1_{j-1}, 2 C^2_{j-3}, 3 C^2_{j-2} leaves the quadrant
-  int slopeOrder = 0;      ///< Lemma 3 failure: 1 slope(O C^1_{j-2}) > slope(O C^2_{j-2}), 2 slope(O C^2_{j-2}) > slope(O C^2_{j-3})
-  double angle = 0.0;      ///< the angle O C^2_{j-2} C^2_{j-3} in radians (pi when C^2_{j-2} = O)
+  bool theorem2 =
+      false;  ///< Theorem 2: (i) fair location, (ii) slope(O C^1_{j-2}) <= slope(O C^2_{j-3}), (iii) one quadrant
+  bool degenerate = false;  ///< the first control vector of the segment is zero: no local frame
+  int offQuadrant = -1;     ///< Lemma 1 failure: 0 C^1_{j-2}, 1 C^1_{j-1}, 2 C^2_{j-3}, 3 C^2_{j-2} leaves the quadrant
+  int slopeOrder =
+      0;  ///< Lemma 3 failure: 1 slope(O C^1_{j-2}) > slope(O C^2_{j-2}), 2 slope(O C^2_{j-2}) > slope(O C^2_{j-3})
+  double angle = 0.0;  ///< the angle O C^2_{j-2} C^2_{j-3} in radians (pi when C^2_{j-2} = O)
   bool theorem1() const { return lemma1 && lemma2 && lemma3; }
 };
 
@@ -117,11 +120,11 @@ enum class MonotoneMethod {
 /// Where the end conditions lie with respect to the family, in the plane of the data.
 struct EndConditions {
   bool admissible = false;
-  bool straight = false;   ///< collinear, same direction: the straight segment
-  bool reversed = false;   ///< curvature must increase from p0 (the curve is solved from p1 back to p0)
-  double a = 0.0, b = 0.0; ///< |M - p0| and |p1 - M|, M the intersection of the tangents
-  double turn = 0.0;       ///< angle from t0 to t1 (radians)
-  std::string reason;      ///< why not admissible
+  bool straight = false;    ///< collinear, same direction: the straight segment
+  bool reversed = false;    ///< curvature must increase from p0 (the curve is solved from p1 back to p0)
+  double a = 0.0, b = 0.0;  ///< |M - p0| and |p1 - M|, M the intersection of the tangents
+  double turn = 0.0;        ///< angle from t0 to t1 (radians)
+  std::string reason;       ///< why not admissible
 };
 
 /// Classifies (p0, t0, p1, t1). Admissible: coplanar, the tangents meet at M ahead of p0 and
@@ -132,11 +135,11 @@ EndConditions analyzeEndConditions(const Eigen::Vector3d& p0, const Eigen::Vecto
                                    const Eigen::Vector3d& t1);
 
 struct MonotoneSpline {
-  BSplineCurve curve;      ///< 5 poles (3 columns), knots 0, 1, 2 with multiplicities 4, 1, 4
-  bool reversed = false;   ///< curvature increases from p0 (else it decreases)
-  bool boundary = false;   ///< on the family's boundary: the parabola (no interior curve exists)
-  double margin = 0.0;     ///< smallest of the normalized Theorem 2 slacks (0 on the boundary)
-  int iterations = 0;      ///< Newton iterations (Fairest) or grid points tried (PaperGrid)
+  BSplineCurve curve;     ///< 5 poles (3 columns), knots 0, 1, 2 with multiplicities 4, 1, 4
+  bool reversed = false;  ///< curvature increases from p0 (else it decreases)
+  bool boundary = false;  ///< on the family's boundary: the parabola (no interior curve exists)
+  double margin = 0.0;    ///< smallest of the normalized Theorem 2 slacks (0 on the boundary)
+  int iterations = 0;     ///< Newton iterations (Fairest) or grid points tried (PaperGrid)
 };
 
 /// Algorithm 2: the cubic B-spline with 5 poles that starts at p0 with tangent direction t0,
@@ -148,9 +151,9 @@ struct MonotoneSpline {
 /// for PaperGrid, when the grid finds none; InputError on bad input, and for a grid step
 /// below kMinGridStep (the grid search's work grows as step^-4).
 constexpr double kMinGridStep = 0.01;
-MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0,
-                                       const Eigen::Vector3d& p1, const Eigen::Vector3d& t1,
-                                       MonotoneMethod method = MonotoneMethod::Fairest, double gridStep = 0.02);
+MonotoneSpline monotoneCurvatureSpline(const Eigen::Vector3d& p0, const Eigen::Vector3d& t0, const Eigen::Vector3d& p1,
+                                       const Eigen::Vector3d& t1, MonotoneMethod method = MonotoneMethod::Fairest,
+                                       double gridStep = 0.02);
 
 // --- The exact monotonicity certificate ----------------------------------------------------
 
@@ -164,25 +167,25 @@ enum class CurvatureTrend {
 };
 
 struct SpanCertificate {
-  double u0 = 0.0, u1 = 0.0;         ///< parameter range of the span
-  double kappa0 = 0.0, kappa1 = 0.0; ///< signed curvature at its ends
+  double u0 = 0.0, u1 = 0.0;          ///< parameter range of the span
+  double kappa0 = 0.0, kappa1 = 0.0;  ///< signed curvature at its ends
   CurvatureTrend trend = CurvatureTrend::Undecided;
-  int degree = 0;                    ///< degree of the polynomial N whose sign is that of kappa'
-  int pieces = 1;                    ///< Bezier pieces of N examined (1: decided by its coefficients)
-  double at = 0.0;                   ///< Extremum: parameter of the extremum; Singular/Undecided: where
-  double kappaAt = 0.0;              ///< Extremum: curvature there
-  bool maximum = false;              ///< Extremum: a maximum (else a minimum)
+  int degree = 0;        ///< degree of the polynomial N whose sign is that of kappa'
+  int pieces = 1;        ///< Bezier pieces of N examined (1: decided by its coefficients)
+  double at = 0.0;       ///< Extremum: parameter of the extremum; Singular/Undecided: where
+  double kappaAt = 0.0;  ///< Extremum: curvature there
+  bool maximum = false;  ///< Extremum: a maximum (else a minimum)
   std::string reason;
 };
 
 struct MonotonicityCertificate {
   bool monotone = false;
-  bool increasing = false;  ///< signed curvature nondecreasing along the parameter
-  bool decreasing = false;  ///< nonincreasing (both: constant curvature)
+  bool increasing = false;                            ///< signed curvature nondecreasing along the parameter
+  bool decreasing = false;                            ///< nonincreasing (both: constant curvature)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< plane normal the curvature sign refers to
   double kappaStart = 0.0, kappaEnd = 0.0;
   std::vector<SpanCertificate> spans;
-  std::string reason;       ///< one sentence for the whole curve
+  std::string reason;  ///< one sentence for the whole curve
 };
 
 /// Exact certificate for a planar B-spline of any degree, polynomial or rational (positive

@@ -1,7 +1,7 @@
 // Exact conversion between the kernel's BSplineCurve and OpenCASCADE's Geom_BSplineCurve.
 #pragma once
-#include <string>
 #include <Geom_BSplineCurve.hxx>
+#include <string>
 #include "fairsplines/csr.hpp"
 #include "fairsplines/types.hpp"
 

@@ -33,7 +33,8 @@ PointMatrix tensorControlNet(const PointMatrix& bezier, int nI, int nJ, const Ei
 /// (rational) B-spline in u, times the rational quadratic circle (four quarter arcs) in v.
 /// Any profile works (each pole turns about the axis). Throws InputError for a zero axis
 /// direction or a profile that lies on the axis.
-BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisPoint, const Eigen::Vector3d& axisDirection);
+BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisPoint,
+                       const Eigen::Vector3d& axisDirection);
 
 /// Exact conversion; throws InputError when OCCT rejects the data.
 Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface);

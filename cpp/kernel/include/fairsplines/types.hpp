@@ -16,10 +16,10 @@ using PointsRef = Eigen::Ref<const PointMatrix>;
 /// the number of poles equals the sum of the multiplicities minus the last one.
 struct BSplineCurve {
   int degree = 3;
-  PointMatrix poles;          ///< n x dim control points
-  Eigen::VectorXd weights;    ///< empty for a polynomial curve, else one weight per pole
-  Eigen::VectorXd knots;      ///< strictly increasing distinct knots
-  Eigen::VectorXi mults;      ///< multiplicity of each knot
+  PointMatrix poles;        ///< n x dim control points
+  Eigen::VectorXd weights;  ///< empty for a polynomial curve, else one weight per pole
+  Eigen::VectorXd knots;    ///< strictly increasing distinct knots
+  Eigen::VectorXi mults;    ///< multiplicity of each knot
   bool periodic = false;
 
   bool isRational() const { return weights.size() > 0; }
