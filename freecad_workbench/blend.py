@@ -75,6 +75,12 @@ def _interface(shape, at):
     return at
 
 
+def _interface_or_auto(shape, at):
+    """As _interface, but None is the kernel's 'auto': the end unless it is a pole or, for the
+    default ring, the start has more room for it (issue 15)."""
+    return "auto" if at is None else _interface(shape, at)
+
+
 def _complex(shape, freeform, method, naive, at):
     frame = (shape.center, shape.x_axis, shape.y_axis)
     ring = _ring(shape, freeform)
@@ -112,7 +118,7 @@ def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None,
         if _interface(shape, at) != "end":
             raise InputError("an edited control structure joins at the end of its profile")
         return blend_result(kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
-    return blend_result(_complex(shape, freeform, method, False, _interface(shape, at)))
+    return blend_result(_complex(shape, freeform, method, False, _interface_or_auto(shape, at)))
 
 
 def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
@@ -126,7 +132,7 @@ def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, conti
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     if continuity == "C1":
         return blend_naive_c1(shape, freeform, at=_interface(shape, at))
-    return blend_result(_complex(shape, freeform, "rho", True, _interface(shape, at)), single=False)
+    return blend_result(_complex(shape, freeform, "rho", True, _interface_or_auto(shape, at)), single=False)
 
 
 def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str = "C2",

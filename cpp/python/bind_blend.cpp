@@ -83,7 +83,8 @@ const char* roleOf(TaggedPatch::Role r) {
 Interface interfaceOf(const std::string& at) {
   if (at == "end") return Interface::End;
   if (at == "start") return Interface::Start;
-  throw InputError("the interface must be at the profile's 'end' or 'start', not '" + at + "'");
+  if (at == "auto") return Interface::Auto;
+  throw InputError("the interface must be at the profile's 'end', 'start' or 'auto', not '" + at + "'");
 }
 
 ShapeOfRevolution::Kind kindOf(const std::string& kind) {

@@ -19,9 +19,10 @@ blend). `Continuity` C1 builds Section 5 instead: the shape as a G1 biquadratic 
 instead of the default ring (bicubic, periodic
 around the axis, clamped along it: any knots, they are merged with the shape's); it moves
 with its object. `Interface` picks the end of the profile the free-form side joins (Auto:
-the end, or the start where the end is a pole, as for a dome). `Patches` counts the
-patches per role. Bad input (angles that do not increase, a radius that is not positive, a
-ring that would reach the axis, a face that is not a matching B-spline ring) keeps the last
+the end, or the start where the end is a pole, as for a dome, or where the start leaves the
+default ring more room). `Patches` counts the patches per role. Bad input (angles that do
+not increase, a radius that is not positive, an end with no room for the default ring, a
+face that is not a matching B-spline ring) keeps the last
 good shape and puts the reason in `Status`.
 """
 import math

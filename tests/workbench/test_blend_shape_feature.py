@@ -135,7 +135,7 @@ def test_undo_removes_the_feature(doc):
         (dict(Uniform=False, Longitudes=[0.0, 180.0, 360.0, 400.0]), "more than a full turn"),
         (dict(Radius=0.0), "radius"),
         (dict(AroundCount=0), "at least 1"),
-        (dict(ProfileEnd=89.0), "axis"),
+        (dict(Interface="End", ProfileEnd=89.5), "no room at the interface"),
     ],
 )
 def test_bad_input_keeps_the_last_good_shape_with_the_message(doc, change, message):
@@ -150,7 +150,7 @@ def test_bad_input_keeps_the_last_good_shape_with_the_message(doc, change, messa
     # fixing it recovers
     for key, value in change.items():
         setattr(obj, key, {"Uniform": True, "Longitudes": [0.0, 120.0, 240.0, 360.0], "Radius": 10.0,
-                           "AroundCount": 6, "ProfileEnd": 45.0}[key])
+                           "AroundCount": 6, "ProfileEnd": 45.0, "Interface": "Auto"}[key])
     doc.recompute()
     assert obj.Status == "ok"
 

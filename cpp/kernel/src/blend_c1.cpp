@@ -297,12 +297,9 @@ Eigen::VectorXd ringKnotsC1(const Eigen::VectorXd& angles, const Eigen::VectorXd
 Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Eigen::VectorXd& knotsU) {
   const int n = shape.piecesU();
   if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per arc around the axis, plus one");
-  const Eigen::Vector2d base = shape.end + shape.size / 2 * shape.tangent;
-  const double step = shape.size / 4;
-  const double scale = std::max(std::abs(shape.end.x()), std::abs(shape.end.y())) + shape.size;
-  if (!(base.x() > 0.05 * scale) || !(base.x() + 2 * step * shape.tangent.x() > 0.05 * scale)) {
-    throw InputError("the default ring would reach the axis: give a free-form net");
-  }
+  const detail::RingRows rows = detail::defaultRingRows(shape.end, shape.tangent, shape.size, 3, "interface");
+  const Eigen::Vector2d base = shape.end + rows.offset * shape.tangent;
+  const double step = rows.step;
   const ShapeFrame& f = shape.frame;
   TColgp_Array2OfPnt poles(1, n, 1, 3);
   for (int j = 0; j < 3; ++j) {

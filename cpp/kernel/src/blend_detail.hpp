@@ -77,4 +77,25 @@ struct SplitPieces {
 SplitPieces splitBezierPieces(const PointMatrix& bezier, int order, const Eigen::VectorXd& knots,
                               const std::vector<std::vector<double>>& cuts);
 
+/// The rows of a default ring beyond the interface (issue 15): the first `offset` along the
+/// profile's exit tangent, then one every `step`. The full ring (fraction 1) has offset
+/// size / 2 and step size / 4. Where the tangent runs towards the axis the whole ring is
+/// shortened by one factor, `fraction`, so that its last row keeps 5% of the shape's extent
+/// (|coordinates| + size) off the axis.
+struct RingRows {
+  double offset = 0.0, step = 0.0, fraction = 1.0;
+};
+
+/// How much of the full default ring of `rows` rows fits beyond the interface `end`
+/// (rho, z) with exit direction `tangent` and last-piece length `size`: 1 when all of it
+/// does, less where the ring must be shortened, <= 0 where not even the interface is clear
+/// of the axis.
+double defaultRingRoom(const Eigen::Vector2d& end, const Eigen::Vector2d& tangent, double size, int rows);
+
+/// The rows of the default ring, shortened to the room there is (defaultRingRoom). Throws
+/// InputError naming the room when less than a twentieth of the ring fits ("which": the end of
+/// the profile, for the message).
+RingRows defaultRingRows(const Eigen::Vector2d& end, const Eigen::Vector2d& tangent, double size, int rows,
+                         const char* which);
+
 }  // namespace fairsplines::detail

@@ -1,6 +1,7 @@
 // Profiles of the shapes of revolution in the (distance from the axis, height) plane, and
 // the tensor rows of a revolved shape: Karčiauskas & Peters, Section 4.1 (the C2 sextic
 // pieces of a circle), eq. (2) (its G2 cubic pieces); see blend_surface_detail.hpp.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -131,7 +132,20 @@ RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV,
 // ---------------------------------------------------------------------------------------
 // The interface and the circle around the axis
 
-RevolvedProfile atInterface(const RevolvedProfile& p, Interface at) {
+RevolvedProfile atInterface(const RevolvedProfile& p, Interface at, bool defaultRing) {
+  if (at == Interface::Auto) {
+    const RevolvedProfile back = reversedProfile(p);
+    auto onAxis = [](const RevolvedProfile& q) { return !(q.end.x() > 1e-9 * (std::abs(q.end.y()) + q.size)); };
+    if (onAxis(p)) {
+      at = Interface::Start;
+    } else if (onAxis(back) || !defaultRing) {
+      at = Interface::End;
+    } else {
+      const double endRoom = detail::defaultRingRoom(p.end, p.tangent, p.size, 4);
+      const double startRoom = detail::defaultRingRoom(back.end, back.tangent, back.size, 4);
+      at = endRoom >= std::min(1.0, startRoom) ? Interface::End : Interface::Start;
+    }
+  }
   RevolvedProfile out = at == Interface::End ? p : reversedProfile(p);
   checkInterfaceOffAxis(out, at == Interface::End ? "end" : "start");
   return out;

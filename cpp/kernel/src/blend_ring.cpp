@@ -149,18 +149,47 @@ std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& rin
 }
 
 // ---------------------------------------------------------------------------------------
+// The default ring's extent (shared with the C1 ring)
+
+namespace {
+constexpr double kAxisMargin = 0.05;       // the last row stays this share of the shape's extent off the axis
+constexpr double kMinRingFraction = 0.05;  // below a twentieth of the full ring, there is no default ring
+}  // namespace
+
+double defaultRingRoom(const Eigen::Vector2d& end, const Eigen::Vector2d& tangent, double size, int rows) {
+  const double margin = kAxisMargin * (std::max(std::abs(end.x()), std::abs(end.y())) + size);
+  const double reach = size / 2 + (rows - 1) * size / 4;  // the last row's distance, full ring
+  if (!(end.x() > margin)) return 0.0;
+  if (tangent.x() >= 0.0) return 1.0;  // away from the axis, or along it
+  return std::min(1.0, (end.x() - margin) / (reach * -tangent.x()));
+}
+
+RingRows defaultRingRows(const Eigen::Vector2d& end, const Eigen::Vector2d& tangent, double size, int rows,
+                         const char* which) {
+  const double room = defaultRingRoom(end, tangent, size, rows);
+  if (!(room >= kMinRingFraction)) {
+    throw InputError(
+        std::string("the default ring has no room at the ") + which + ": it is " + exactNumber(end.x()) +
+        " from the axis and the ring runs towards it, so less than a twentieth of the ring fits; join at the "
+        "other end of the profile, end the shape farther from the axis, or give a free-form ring");
+  }
+  RingRows out;
+  out.fraction = room;
+  out.offset = room * size / 2;
+  out.step = room * size / 4;
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
 // The default ring
 
 Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& p,
                                         const Eigen::VectorXd& knotsU) {
   const int n = lon.pieces();
   if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per longitude");
-  const Eigen::Vector2d base = p.end + p.size / 2 * p.tangent;
-  const double step = p.size / 4;
-  const double scale = std::max(std::abs(p.end.x()), std::abs(p.end.y())) + p.size;
-  if (!(base.x() > 0.05 * scale) || !(base.x() + 3 * step * p.tangent.x() > 0.05 * scale)) {
-    throw InputError("the default ring would reach the axis: give a free-form net");
-  }
+  const RingRows rows = defaultRingRows(p.end, p.tangent, p.size, 4, "interface");
+  const Eigen::Vector2d base = p.end + rows.offset * p.tangent;
+  const double step = rows.step;
   // Full turn: one pole per longitude, periodic. Partial turn: clamped, the end poles on the
   // circle, the next ones along its tangent (a third of the end arc), one per inner longitude.
   const int poleCount = lon.closed ? n : n + 3;

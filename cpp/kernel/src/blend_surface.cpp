@@ -245,13 +245,15 @@ BlendComplex blendSphereZone(const ShapeFrame& frame, double radius, const Eigen
                              const Eigen::VectorXd& latitudes, CircleReparam method, Handle(Geom_BSplineSurface) ring,
                              bool sexticInV, Interface at) {
   const G2CircleSpline lon = checkedLongitudes(frame, longitudes);
-  return blendRevolved(frame, lon, atInterface(sphereProfile(radius, latitudes, method), at), method, ring, sexticInV);
+  return blendRevolved(frame, lon, atInterface(sphereProfile(radius, latitudes, method), at, ring.IsNull()), method,
+                       ring, sexticInV);
 }
 
 BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const Eigen::VectorXd& longitudes,
                                   const Eigen::VectorXd& latitudes, Handle(Geom_BSplineSurface) ring, Interface at) {
   const G2CircleSpline lon = checkedLongitudes(frame, longitudes);
-  return blendRevolvedNaive(frame, lon, atInterface(sphereProfile(radius, latitudes, CircleReparam::Rho), at), ring);
+  return blendRevolvedNaive(frame, lon,
+                            atInterface(sphereProfile(radius, latitudes, CircleReparam::Rho), at, ring.IsNull()), ring);
 }
 
 BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, const Eigen::VectorXd& angles,
@@ -259,7 +261,7 @@ BlendComplex blendCone(const ShapeFrame& frame, double radius0, double slope, co
                        bool sexticInV, bool naive, Interface at) {
   if (!std::isfinite(radius0) || !std::isfinite(slope)) throw InputError("a cone needs a finite radius and slope");
   const G2CircleSpline lon = checkedLongitudes(frame, angles);
-  const RevolvedProfile p = atInterface(lineProfile(radius0, slope, heights), at);
+  const RevolvedProfile p = atInterface(lineProfile(radius0, slope, heights), at, ring.IsNull());
   return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
 }
 
@@ -267,7 +269,7 @@ BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen
                         const Eigen::VectorXd& anglesV, CircleReparam method, Handle(Geom_BSplineSurface) ring,
                         bool sexticInV, bool naive, Interface at) {
   const G2CircleSpline lon = checkedLongitudes(frame, anglesU);
-  const RevolvedProfile p = atInterface(torusProfile(R, r, anglesV, method), at);
+  const RevolvedProfile p = atInterface(torusProfile(R, r, anglesV, method), at, ring.IsNull());
   return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
 }
 

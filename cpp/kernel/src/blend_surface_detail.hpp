@@ -50,7 +50,9 @@ RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV,
 
 /// The profile with the interface at its end: as it is (Interface::End) or reversed.
 /// Throws InputError where that end (the interface) lies on the axis.
-RevolvedProfile atInterface(const RevolvedProfile& p, Interface at);
+/// Interface::Auto picks the end unless it lies on the axis, or, with `defaultRing`, unless
+/// the start leaves the default ring more room (detail::defaultRingRoom).
+RevolvedProfile atInterface(const RevolvedProfile& p, Interface at, bool defaultRing = false);
 
 /// The G2 circle of the longitudes around the frame's axis: a full turn (closed in u) or a
 /// partial one (open). Throws InputError for a frame that is not orthonormal or longitudes

@@ -44,8 +44,9 @@ struct BlendComplex {
 
 /// Where a shape of revolution meets the free-form side: the end of its profile (top
 /// latitude, top height, last tube angle) or its start (bottom), e.g. for a dome whose top
-/// is a pole. At the start the profile is run backwards (v reversed).
-enum class Interface { End, Start };
+/// is a pole. At the start the profile is run backwards (v reversed). Auto: the end, unless
+/// it is a pole, or, for the default ring, the start has more room for it (issue 15).
+enum class Interface { End, Start, Auto };
 
 /// Exact rational Bézier Geom_BSplineSurface of a patch over [0,1]^2. Throws InputError for
 /// a non-positive weight.
