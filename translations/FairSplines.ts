@@ -648,6 +648,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
+        <source>This part of the curve is the csr-spline of the samples (curvature-sensitive spline, Section 4 of the paper): close to every sample, without added curvature wiggles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>To compare: the paper&apos;s naive blend (Fig. 2a), the shape and the ring joined without the transition strip; its seams show</source>
         <translation type="unfinished"></translation>
@@ -744,7 +749,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
-        <source>{} samples, no marks: this part of the curve is their csr-spline</source>
+        <source>{} samples, no marks: the curve follows them closely here</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

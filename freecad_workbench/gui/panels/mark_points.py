@@ -282,8 +282,11 @@ class MarkPointsPanel(LiveEditPanel):
             label, curve, error = self.curves[piece]
             notes = []
             if isinstance(curve, Samples):
-                notes.append(translate("FairSplines", "{} samples, no marks: this part of the curve is their "
-                                       "csr-spline").format(len(curve.points)))
+                notes.append(translate("FairSplines", "{} samples, no marks: the curve follows them closely "
+                                       "here").format(len(curve.points)))
+                info.setToolTip(translate("FairSplines", "This part of the curve is the csr-spline of the samples "
+                                          "(curvature-sensitive spline, Section 4 of the paper): close to every "
+                                          "sample, without added curvature wiggles"))
             if error:
                 notes.append(error)
             if piece < len(added) and added[piece]:
