@@ -23,22 +23,15 @@
 #include "fairsplines/occt.hpp"
 #include "work_budget.hpp"
 
+#include "test_support.hpp"
+
 using namespace fairsplines;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 namespace {
 
-/// The message of the InputError `call` throws ("" if it returns; the test fails if any other
-/// exception escapes).
-std::string refusal(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::refusal;
 
 /// Expect InputError whose message contains `words`.
 void expectRefused(const std::function<void()>& call, const std::string& words) {

@@ -19,6 +19,8 @@
 #include "fairsplines/monotone.hpp"
 #include "fairsplines/occt.hpp"
 
+#include "test_support.hpp"
+
 using namespace fairsplines;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
@@ -43,14 +45,7 @@ Vector3d toEigen(const gp_Vec& v) { return Vector3d(v.X(), v.Y(), v.Z()); }
 
 double relative(double a, double b) { return std::abs(a - b) / std::max(std::abs(a), std::abs(b)); }
 
-std::string refusal(const std::function<void()>& call) {
-  try {
-    call();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::refusal;
 
 }  // namespace
 

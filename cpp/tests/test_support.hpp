@@ -3,12 +3,26 @@
 #include <Eigen/Geometry>
 #include <Geom_BSplineCurve.hxx>
 #include <cmath>
+#include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
 
 namespace fairsplines::test {
+
+/// The message of the InputError `call` throws ("" if it returns; any other exception
+/// escapes and fails the test).
+inline std::string refusal(const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 inline PointMatrix circleSamples(int n, double r, double a0, double a1, bool endpoint = true) {
   PointMatrix q(n, 2);
