@@ -20,7 +20,9 @@ double signedCurvature(const gp_Vec& d1, const gp_Vec& d2, const gp_Vec& n);
 
 /// Unit normal of the plane holding all poles, oriented with a non-negative z (then y,
 /// then x) component; empty when the poles do not lie in one plane (relative tolerance).
-/// Throws nothing; the curve must not be null (not checked).
+/// Scale-invariant (the poles are measured divided by a power of two near their spread).
+/// Throws InputError if the curve does not move (its poles coincide to double precision);
+/// the curve must not be null (not checked).
 std::optional<gp_Vec> planeNormal(const Handle(Geom_BSplineCurve)& curve, double relTol = 1e-9);
 
 struct CurvatureProfile {
@@ -33,7 +35,11 @@ struct CurvatureProfile {
 
 /// Curvature at n parameters spread over the curve: every knot span gets samples in
 /// proportion to its parameter length and at least `minPerSpan`, span ends included.
-/// Throws nothing; the curve must not be null and n, minPerSpan should be >= 1 (not checked).
+/// Measured on the curve scaled to size about 1 and scaled back, so a curve 1e300 or
+/// 1e-300 in size gets its curvature. Throws InputError if the curve does not move, if its
+/// derivative vanishes at a sample (the curvature is undefined there, named by u), or if a
+/// curvature or length is beyond double precision; the curve must not be null and n,
+/// minPerSpan should be >= 1 (not checked).
 CurvatureProfile curvatureProfile(const Handle(Geom_BSplineCurve)& curve, int n, int minPerSpan = 8);
 
 /// Sign changes of the signed curvature along the profile; samples with

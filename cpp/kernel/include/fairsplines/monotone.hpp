@@ -199,13 +199,17 @@ struct MonotonicityCertificate {
 /// or a circle (N = 0 by cancellation) and a tangency of kappa' to 0 count as "no change";
 /// a sign change needs witnesses beyond relTol * S on both sides.
 /// Curvature jumps and corners at knots of lower continuity count too.
-/// Throws InputError for a non-planar curve or non-positive weights.
+/// Scale-invariant: the poles are divided by a power of two near their spread (exact), the
+/// curvatures reported in the curve's own units.
+/// Throws InputError for an invalid curve, a curve that does not move, a non-planar curve,
+/// non-positive weights, or curvatures beyond double precision.
 MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, double relTol = 1e-12);
 
 /// Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds (Gauss quadrature, 16 points
 /// per span): 0 for lines and circles. A fairness measure used to compare solvers.
-/// Throws InputError for a curve planarCurve refuses (not a valid B-spline, or a 3D curve whose
-/// poles do not lie in one plane), or a variation that is not finite.
+/// Throws InputError for a curve planarCurve refuses (not a valid B-spline, a curve that does
+/// not move, or a 3D curve whose poles do not lie in one plane), or a variation that is not
+/// finite.
 double curvatureVariation(const BSplineCurve& curve);
 
 }  // namespace fairsplines
