@@ -468,6 +468,7 @@ seed("fuzz_blend_surface", "edge_cone_steep",  # issue 13: a cone with slope 1e1
 # they still take seconds in the sanitized build, near FUZZ_TIMEOUT; their tests remain.
 CRASH_SEEDS = {
     "fuzz_basic_curves": [
+        "line_segment_1.7e308_raise_inf",
         "circle_radius_1.7e308_d1_nan",
         "circle_sweep_-5e-304_parameter_of_nan",
         "ellipse_origin_1e308_d1_nan",

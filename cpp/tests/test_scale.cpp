@@ -10,6 +10,7 @@
 #include <GeomLProp_CLProps.hxx>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "fairsplines/analysis.hpp"
@@ -152,6 +153,13 @@ TEST(ScaleInvariance, LongBasicCurvesHaveAFiniteSize) {
   const auto parabola = parabolaArc(Frame{}, 0.0098, -6.0, 3.3e150);  // fuzz: parabola_t1_3e150_size_inf
   const double x1 = 3.3e150 * 3.3e150 / (4 * 0.0098);
   EXPECT_LT(relative(parabola->size(), std::hypot(x1, 3.3e150)), 1e-9);
+  // Near the largest doubles its cubic form (degree elevation) stays finite: fuzz finding
+  // line_segment_1.7e308_raise_inf, an overflow of (i b_{i-1} + (n + 1 - i) b_i).
+  const auto far = lineSegment(Vector3d(1.7e308, 0, 0), Vector3d(0, 0, -0.00439453125));
+  const std::optional<HomogeneousBezier> cubic = far->homogeneousCubic();
+  ASSERT_TRUE(cubic.has_value());
+  EXPECT_TRUE(cubic->allFinite());
+  EXPECT_LT(relative((*cubic)(1, 0), 1.7e308 / 3 * 2), 1e-15);
   // Beyond doubles it is refused, and by the curve's own name.
   const std::string message = refusal([] { parabolaArc(Frame{}, 0.0098, -6.0, 1e160); });
   EXPECT_NE(message.find("the parabola arc"), std::string::npos) << message;

@@ -67,7 +67,10 @@ void split(const Eigen::MatrixBase<Derived>& b, double t, typename Derived::Plai
 // Degree raising
 
 /// The Bézier rows b raised to `degree` (unchanged if they have that degree or more), one
-/// degree at a time: e_0 = b_0, e_{n+1} = b_n, e_i = (i b_{i-1} + (n + 1 - i) b_i) / (n + 1).
+/// degree at a time: e_0 = b_0, e_{n+1} = b_n, e_i = (i b_{i-1} + (n + 1 - i) b_i) / (n + 1),
+/// evaluated as the convex combination a b_{i-1} + (1 - a) b_i with a = i / (n + 1), so that
+/// rows near the largest doubles do not overflow (a fuzz finding: a line segment from
+/// 1.7e308 gave an infinite cubic).
 template <class Derived>
 typename Derived::PlainObject raise(const Eigen::MatrixBase<Derived>& b, Eigen::Index degree) {
   typename Derived::PlainObject c = b;
@@ -76,8 +79,8 @@ typename Derived::PlainObject raise(const Eigen::MatrixBase<Derived>& b, Eigen::
     e.row(0) = c.row(0);
     e.row(n + 1) = c.row(n);
     for (Eigen::Index i = 1; i <= n; ++i) {
-      e.row(i) = (static_cast<double>(i) * c.row(i - 1) + static_cast<double>(n + 1 - i) * c.row(i)) /
-                 static_cast<double>(n + 1);
+      const double a = static_cast<double>(i) / static_cast<double>(n + 1);
+      e.row(i) = a * c.row(i - 1) + (1.0 - a) * c.row(i);
     }
     c = std::move(e);
   }
