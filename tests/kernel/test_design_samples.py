@@ -14,6 +14,8 @@ import Part
 
 import freecad_workbench as fw
 
+from .fig2 import sign_changes
+
 V = FreeCAD.Vector
 
 # The stated bounds (docs/READINGS.md, "The unifying spline"): the design stays within
@@ -74,11 +76,6 @@ def signed_curvatures(curve, t0, t1, count=4000):
         _, d1, d2 = curve.getD2(t)
         kappa.append(d1.cross(d2).z / d1.Length ** 3)
     return np.array(kappa)
-
-
-def sign_changes(kappa, floor=1e-9):
-    s = np.sign(kappa[np.abs(kappa) > floor])
-    return int(np.count_nonzero(s[1:] != s[:-1]))
 
 
 class Design:
