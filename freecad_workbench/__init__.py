@@ -25,6 +25,7 @@ from . import shapes  # noqa: E402
 from .blend import (  # noqa: E402
     BlendResult,
     blend_basic_shape,
+    blend_chain,
     blend_naive,
     freeform_knots,
     join_basic_shapes,
@@ -69,6 +70,7 @@ __all__ = [
     "shapes",
     "BlendResult",
     "blend_basic_shape",
+    "blend_chain",
     "blend_naive",
     "join_basic_shapes",
     "join_naive",

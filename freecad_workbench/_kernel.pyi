@@ -5,7 +5,7 @@ stub names exactly what the module exports. Arrays are float64 (int32 for multip
 points are rows of an (n, 2) or (n, 3) C-contiguous array, vectors 3 numbers (2 for
 Algorithm 1's plane vectors). Bad input raises InputError with a message naming it.
 """
-from typing import Callable, Optional
+from typing import Callable, Optional, Sequence
 
 import numpy as np
 import numpy.typing as npt
@@ -264,6 +264,10 @@ def blend_cone(origin: FloatArray, x: FloatArray, y: FloatArray, radius0: float,
 def blend_torus(origin: FloatArray, x: FloatArray, y: FloatArray, major_radius: float, minor_radius: float,
                 angles_u: FloatArray, angles_v: FloatArray, method: str = "rho", ring: Optional[BSplineSurface] = None,
                 both_directions: bool = True, naive: bool = False, at: str = "end") -> BlendComplex: ...
+def blend_chain(shapes: Sequence[ShapeOfRevolution], edited: Sequence[Optional[G2Surface]], start_ring: bool,
+                end_ring: bool, start_net: Optional[BSplineSurface] = None,
+                end_net: Optional[BSplineSurface] = None, method: str = "rho",
+                both_directions: bool = True) -> BlendComplex: ...
 def blend_edited(shape: ShapeOfRevolution, edited: G2Surface, method: str = "rho",
                  ring: Optional[BSplineSurface] = None) -> BlendComplex: ...
 def join_shapes(a: ShapeOfRevolution, b: ShapeOfRevolution, method: str = "rho", both_directions: bool = True,

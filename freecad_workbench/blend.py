@@ -18,7 +18,7 @@ whose end is the pole).
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import Optional, Sequence, Union
 
 import numpy as np
 
@@ -153,6 +153,48 @@ def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str 
     return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
 
 
+def _chain_end(end, name):
+    """(ring?, net) of one end of a chain: None (open), "default" (the default ring) or a ring."""
+    if end is None:
+        return False, None
+    if isinstance(end, str):
+        as_choice(end, name, ("default",))
+        return True, None
+    return True, surface_from_part(end)
+
+
+def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional[Union[str, SurfaceLike]] = None,
+                end: Optional[Union[str, SurfaceLike]] = None, method: str = "rho") -> BlendResult:
+    """Several interfaces on one C2 complex: shapes of revolution in order, the end of each
+    joined to the start of the next (as join_basic_shapes, Figs. 9-12), and a free-form ring
+    at the first shape's start and/or the last one's end (as blend_basic_shape). start, end:
+    None (that end stays open), "default" (the default ring continuing the shape) or a
+    bicubic ring (periodic in u for a full turn, clamped in v, its first row at the shape's
+    end, running away from it).
+
+        band = fw.shapes.SphereZone(c, 2.5, longitudes, latitudes)
+        ball = fw.blend_chain(band, start="default", end="default")    # free-form both sides
+        post_dome = fw.blend_chain([post, dome], start="default")      # free-form below the post
+
+    One circle conversion serves every strip: the scalars around the axis are the geometric
+    mean of the shapes' (Fig. 11's average for two). Shapes edited with set_control are
+    joined as edited (G2 along their profile: .surface is None); else .surface is the one C2
+    surface of the whole complex. Rows in v: the start ring, shapes and strips in order, the
+    end ring."""
+    shapes = [shapes] if isinstance(shapes, BasicShape) else list(shapes)
+    if not shapes:
+        raise InputError("blend_chain needs at least one shape")
+    as_choice(method, "method", _METHODS)
+    for shape in shapes:
+        check_cost(require_shape(shape))
+    start_ring, start_net = _chain_end(start, "start")
+    end_ring, end_net = _chain_end(end, "end")
+    edited = [shape.control() if shape.edited else None for shape in shapes]
+    complex_ = kernel.blend_chain([shape._revolution() for shape in shapes], edited, start_ring, end_ring, start_net,
+                                  end_net, method, True)
+    return blend_result(complex_, single=not any(e is not None for e in edited))
+
+
 def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     """The Fig. 2a baseline between two basic shapes: the G2 patches as they are and a (3,5)
     Hermite strip without reparameterization (its .surface is None: not C2)."""
@@ -162,4 +204,5 @@ def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     return blend_result(complex_, single=False)
 
 
-__all__ = ["BlendResult", "blend_basic_shape", "blend_naive", "freeform_knots", "join_basic_shapes", "join_naive"]
+__all__ = ["BlendResult", "blend_basic_shape", "blend_chain", "blend_naive", "freeform_knots", "join_basic_shapes",
+           "join_naive"]

@@ -101,6 +101,7 @@ blend_sphere_zone = _kernel.blend_sphere_zone
 blend_sphere_zone_naive = _kernel.blend_sphere_zone_naive
 blend_cone = _kernel.blend_cone
 blend_torus = _kernel.blend_torus
+blend_chain = _kernel.blend_chain
 blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
 ring_knots_c1 = _kernel.ring_knots_c1

@@ -337,6 +337,22 @@ void bindBlend(py::module_& m) {
       "a"_a, "b"_a, "method"_a = "rho", "both_directions"_a = true, "naive"_a = false,
       "The end of a's profile joined to the start of b's (Figs. 9, 11, 12).");
   m.def(
+      "blend_chain",
+      [](const std::vector<ShapeOfRevolution>& shapes, const std::vector<std::optional<G2Surface>>& edited,
+         bool startRing, bool endRing, const std::optional<BSplineSurface>& startNet,
+         const std::optional<BSplineSurface>& endNet, const std::string& method, bool bothDirections) {
+        if (edited.size() != shapes.size()) throw InputError("blend_chain: one edited entry (or None) per shape");
+        std::vector<ChainShape> chain;
+        for (std::size_t s = 0; s < shapes.size(); ++s) chain.push_back(ChainShape{shapes[s], edited[s]});
+        const ChainEnd start = startRing ? ChainEnd::freeForm(ringOf(startNet)) : ChainEnd::open();
+        const ChainEnd end = endRing ? ChainEnd::freeForm(ringOf(endNet)) : ChainEnd::open();
+        return blendChain(chain, start, end, methodOf(method), bothDirections);
+      },
+      "shapes"_a, "edited"_a, "start_ring"_a, "end_ring"_a, "start_net"_a = py::none(), "end_net"_a = py::none(),
+      "method"_a = "rho", "both_directions"_a = true,
+      "Several interfaces on one complex (issue 15): shapes joined end to start (Figs. 9, 11, 12), a free-form ring "
+      "(None: the default one) at the chain's start and/or end (Section 4.2).");
+  m.def(
       "blend_edited",
       [](const ShapeOfRevolution& shape, const G2Surface& edited, const std::string& method,
          const std::optional<BSplineSurface>& ring) {

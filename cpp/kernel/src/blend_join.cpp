@@ -23,19 +23,12 @@ using detail::sphereProfile;
 using detail::stripPatch;
 using detail::torusProfile;
 
-namespace {
+namespace detail {
 
 // ---------------------------------------------------------------------------------------
-// The two sides of a join
+// The shapes of a join
 
-/// One side of a shape-to-shape join: the circle around the axis and the profile.
-struct JoinSide {
-  ShapeFrame frame;
-  G2CircleSpline lon;
-  RevolvedProfile profile;  ///< in its own direction (v increasing)
-};
-
-JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method, Interface at, const char* name) {
+JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method) {
   JoinSide side;
   side.frame = shape.frame;
   side.lon = checkedLongitudes(shape.frame, shape.around);
@@ -52,12 +45,68 @@ JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method, Interfac
       side.profile = torusProfile(shape.size0, shape.size1, shape.profile, method);
       break;
   }
-  const RevolvedProfile interface = at == Interface::End ? side.profile : reversedProfile(side.profile);
-  if (!(interface.end.x() > 1e-9 * (std::abs(interface.end.y()) + interface.size))) {
-    throw InputError(std::string("the ") + name + " shape's profile meets the axis (a pole) at the join");
-  }
   return side;
 }
+
+void checkJoinOffAxis(const JoinSide& side, Interface at, const std::string& name) {
+  const RevolvedProfile interface = at == Interface::End ? side.profile : reversedProfile(side.profile);
+  if (!(interface.end.x() > 1e-9 * (std::abs(interface.end.y()) + interface.size))) {
+    throw InputError("the " + name + " shape's profile meets the axis (a pole) at the join");
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// An edited control structure, layer by layer
+
+BasicLayers editedLayers(const JoinSide& side, const G2Surface& edited, CircleReparam method,
+                         const Eigen::VectorXd& betaT) {
+  const int n = side.lon.pieces(), rows = static_cast<int>(side.profile.cubic.size());
+  if (edited.nu != n || edited.nv != rows || edited.bezier.rows() != 16 * n * rows) {
+    std::ostringstream os;
+    os << "the edited control structure has " << edited.nu << " x " << edited.nv << " patches; the shape has " << n
+       << " x " << rows;
+    throw InputError(os.str());
+  }
+  for (Eigen::Index k = 0; k < edited.bezier.rows(); ++k) {
+    if (!edited.bezier.row(k).allFinite() || !(edited.bezier(k, 3) > 0)) {
+      throw InputError("the edited control structure has a non-finite point or a non-positive weight");
+    }
+  }
+  // Section 4.1 on every control layer of the structure: the circle partition's maps (rho,
+  // sigma or mixed) compose the Hermite quadratics of each layer's cubic pieces (eqs. (9),
+  // (10)); eq. (11) then makes every arc-to-arc join C2 (it changes nothing where the join
+  // is already C2, i.e. away from the edits).
+  const CircleMaps maps = circleMaps(side.lon, method, betaT);
+  BasicLayers basic;
+  basic.rows = rows;
+  basic.dv = 3;
+  basic.knotsV = Eigen::VectorXd::LinSpaced(rows + 1, 0.0, rows);
+  for (int J = 0; J < rows; ++J) {
+    for (int sv = 0; sv <= 3; ++sv) {
+      PointMatrix cubic(4 * n, 4);
+      for (int I = 0; I < n; ++I) {
+        for (int r = 0; r < 4; ++r) cubic.row(4 * I + r) = edited.point(I, J, r, sv);
+      }
+      C2SexticSpline layer = g2ToC2(cubic, maps.maps, maps.betaPieces, side.lon.closed);
+      const int P = layer.pieces();
+      for (int i = side.lon.closed ? 0 : 1; i < n; ++i) {
+        const int k = layer.firstPiece[i], left = (k + P - 1) % P;
+        PointMatrix a = layer.bezier.middleRows(7 * left, 7), b = layer.bezier.middleRows(7 * k, 7);
+        adjustC2(a, b, layer.beta[k]);
+        layer.bezier.middleRows(7 * left, 7) = a;
+        layer.bezier.middleRows(7 * k, 7) = b;
+      }
+      basic.layers.push_back(std::move(layer));
+    }
+  }
+  return basic;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::JoinSide;
 
 // ---------------------------------------------------------------------------------------
 // Fig. 2a between two G2 complexes
@@ -103,47 +152,9 @@ BlendComplex joinNaive(const JoinSide& a, const JoinSide& b) {
 
 BlendComplex blendEdited(const ShapeOfRevolution& shape, const G2Surface& edited, CircleReparam method,
                          Handle(Geom_BSplineSurface) ring) {
-  const JoinSide side = joinSide(shape, method, Interface::End, "edited");
-  const int n = side.lon.pieces(), rows = static_cast<int>(side.profile.cubic.size());
-  if (edited.nu != n || edited.nv != rows || edited.bezier.rows() != 16 * n * rows) {
-    std::ostringstream os;
-    os << "the edited control structure has " << edited.nu << " x " << edited.nv << " patches; the shape has " << n
-       << " x " << rows;
-    throw InputError(os.str());
-  }
-  for (Eigen::Index k = 0; k < edited.bezier.rows(); ++k) {
-    if (!edited.bezier.row(k).allFinite() || !(edited.bezier(k, 3) > 0)) {
-      throw InputError("the edited control structure has a non-finite point or a non-positive weight");
-    }
-  }
-  // Section 4.1 on every control layer of the structure: the circle partition's maps (rho,
-  // sigma or mixed) compose the Hermite quadratics of each layer's cubic pieces (eqs. (9),
-  // (10)); eq. (11) then makes every arc-to-arc join C2 (it changes nothing where the join
-  // is already C2, i.e. away from the edits).
-  const CircleMaps maps = circleMaps(side.lon, method);
-  BasicLayers basic;
-  basic.rows = rows;
-  basic.dv = 3;
-  basic.knotsV = Eigen::VectorXd::LinSpaced(rows + 1, 0.0, rows);
-  for (int J = 0; J < rows; ++J) {
-    for (int sv = 0; sv <= 3; ++sv) {
-      PointMatrix cubic(4 * n, 4);
-      for (int I = 0; I < n; ++I) {
-        for (int r = 0; r < 4; ++r) cubic.row(4 * I + r) = edited.point(I, J, r, sv);
-      }
-      C2SexticSpline layer = g2ToC2(cubic, maps.maps, maps.betaPieces, side.lon.closed);
-      const int P = layer.pieces();
-      for (int i = side.lon.closed ? 0 : 1; i < n; ++i) {
-        const int k = layer.firstPiece[i], left = (k + P - 1) % P;
-        PointMatrix a = layer.bezier.middleRows(7 * left, 7), b = layer.bezier.middleRows(7 * k, 7);
-        adjustC2(a, b, layer.beta[k]);
-        layer.bezier.middleRows(7 * left, 7) = a;
-        layer.bezier.middleRows(7 * k, 7) = b;
-      }
-      basic.layers.push_back(std::move(layer));
-    }
-  }
-  return assembleBlend(side.frame, side.lon, side.profile, std::move(basic), ring);
+  const JoinSide side = detail::joinSide(shape, method);
+  detail::checkJoinOffAxis(side, Interface::End, "edited");
+  return assembleBlend(side.frame, side.lon, side.profile, detail::editedLayers(side, edited, method), ring);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -151,76 +162,28 @@ BlendComplex blendEdited(const ShapeOfRevolution& shape, const G2Surface& edited
 
 BlendComplex joinShapes(const ShapeOfRevolution& shapeA, const ShapeOfRevolution& shapeB, CircleReparam method,
                         bool sexticInV, bool naive) {
-  const JoinSide a = joinSide(shapeA, method, Interface::End, "first");
-  const JoinSide b = joinSide(shapeB, method, Interface::Start, "second");
-  const int n = a.lon.pieces();
-  if (b.lon.pieces() != n) {
+  if (!naive) {
+    BlendComplex out = blendChain({ChainShape{shapeA, std::nullopt}, ChainShape{shapeB, std::nullopt}},
+                                  ChainEnd::open(), ChainEnd::open(), method, sexticInV);
+    // As declared: rowsBasic counts a's rows (before the strip), rowsFreeForm b's (after it).
+    const auto strip = std::find_if(out.patches.begin(), out.patches.end(),
+                                    [](const TaggedPatch& p) { return p.role == TaggedPatch::Role::Transition; });
+    out.rowsFreeForm = out.rowsBasic - strip->vPiece;
+    out.rowsBasic = strip->vPiece;
+    return out;
+  }
+  const JoinSide a = detail::joinSide(shapeA, method), b = detail::joinSide(shapeB, method);
+  detail::checkJoinOffAxis(a, Interface::End, "first");
+  detail::checkJoinOffAxis(b, Interface::Start, "second");
+  if (b.lon.pieces() != a.lon.pieces()) {
     std::ostringstream os;
-    os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.lon.pieces() << ")";
+    os << "the two shapes need the same number of arcs around the axis (" << a.lon.pieces() << " and " << b.lon.pieces()
+       << ")";
     throw InputError(os.str());
   }
   if (a.lon.closed != b.lon.closed)
     throw InputError("both shapes need a full turn around the axis, or both a partial one");
-  if (naive) return joinNaive(a, b);
-  // Fig. 11: across the transition the scalars are averaged, betaT_i = sqrt(beta_i^top beta_i^bottom).
-  const Eigen::VectorXd betaT = (a.lon.beta.array() * b.lon.beta.array()).sqrt().matrix();
-  C2SexticSpline ca = circleToC2(a.lon, method, betaT), cb = circleToC2(b.lon, method, betaT);
-  // Fig. 12: both sides as C2 sextics with the same pieces, so no knot insertion: an arc with
-  // one piece on one side and three on the other is cut into thirds.
-  std::vector<int> parts(n);
-  for (int i = 0; i < n; ++i) {
-    parts[i] = std::max(ca.firstPiece[i + 1] - ca.firstPiece[i], cb.firstPiece[i + 1] - cb.firstPiece[i]);
-  }
-  ca = refineArcs(ca, parts);
-  cb = refineArcs(cb, parts);
-  const Eigen::VectorXd tA = ca.knots(), tB = cb.knots();
-  if (!((tA - tB).cwiseAbs().maxCoeff() <= 1e-9 * tA[tA.size() - 1])) {
-    throw std::logic_error("joinShapes: the two sides' u knots differ after refinement");
-  }
-  BlendComplex out;
-  out.knotsU = tA / tA[ca.firstPiece[1]];  // the first arc has length 1, as arcKnots
-  out.piecesU = ca.pieces();
-  out.closedU = a.lon.closed;
-  out.basicC2InV = sexticInV;
-  const std::vector<Homogeneous3>& rowsA = sexticInV ? a.profile.sextic : a.profile.cubic;
-  const std::vector<Homogeneous3>& rowsB = sexticInV ? b.profile.sextic : b.profile.cubic;
-  const int dv = sexticInV ? 6 : 3;
-  out.rowsBasic = static_cast<int>(rowsA.size());
-  out.rowsFreeForm = static_cast<int>(rowsB.size());
-  const Eigen::VectorXd knotsA =
-      sexticInV ? a.profile.sexticKnots : Eigen::VectorXd::LinSpaced(out.rowsBasic + 1, 0.0, out.rowsBasic);
-  const Eigen::VectorXd knotsB =
-      sexticInV ? b.profile.sexticKnots : Eigen::VectorXd::LinSpaced(out.rowsFreeForm + 1, 0.0, out.rowsFreeForm);
-  // Scalar 1 across both seams of the strip: strip and b's first row as long as a's last row.
-  const double stripLength = knotsA[out.rowsBasic] - knotsA[out.rowsBasic - 1];
-  out.knotsV.resize(out.rowsBasic + out.rowsFreeForm + 2);
-  out.knotsV.head(out.rowsBasic + 1) = knotsA;
-  out.knotsV[out.rowsBasic + 1] = knotsA[out.rowsBasic] + stripLength;
-  const double scaleB = stripLength / (knotsB[1] - knotsB[0]);
-  for (int j = 1; j <= out.rowsFreeForm; ++j) {
-    out.knotsV[out.rowsBasic + 1 + j] = out.knotsV[out.rowsBasic + 1] + scaleB * (knotsB[j] - knotsB[0]);
-  }
-  for (int k = 0; k < out.piecesU; ++k) {
-    Homogeneous4 top, bottom;
-    for (int side = 0; side < 2; ++side) {
-      const std::vector<Homogeneous3>& rows = side == 0 ? rowsA : rowsB;
-      const PointMatrix circle = (side == 0 ? ca : cb).bezier.middleRows(7 * k, 7);
-      for (int j = 0; j < static_cast<int>(rows.size()); ++j) {
-        TaggedPatch p;
-        p.degreeU = 6;
-        p.degreeV = dv;
-        p.uPiece = k;
-        p.vPiece = side == 0 ? j : out.rowsBasic + 1 + j;
-        p.bezier = revolveRows(side == 0 ? a.frame : b.frame, circle, rows[j]);
-        if (side == 0 && j + 1 == out.rowsBasic) top = p.bezier;
-        if (side == 1 && j == 0) bottom = p.bezier;
-        out.patches.push_back(std::move(p));
-      }
-    }
-    // Section 4.2, steps 2-3: three layers from each side, degree-raised to (6,5).
-    out.patches.push_back(stripPatch(k, out.rowsBasic, 6, top, dv, bottom, dv));
-  }
-  return out;
+  return joinNaive(a, b);
 }
 
 }  // namespace fairsplines

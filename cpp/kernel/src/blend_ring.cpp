@@ -184,10 +184,10 @@ RingRows defaultRingRows(const Eigen::Vector2d& end, const Eigen::Vector2d& tang
 // The default ring
 
 Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& p,
-                                        const Eigen::VectorXd& knotsU) {
+                                        const Eigen::VectorXd& knotsU, const char* which) {
   const int n = lon.pieces();
   if (knotsU.size() != n + 1) throw InputError("the ring needs one knot per longitude");
-  const RingRows rows = defaultRingRows(p.end, p.tangent, p.size, 4, "interface");
+  const RingRows rows = defaultRingRows(p.end, p.tangent, p.size, 4, which);
   const Eigen::Vector2d base = p.end + rows.offset * p.tangent;
   const double step = rows.step;
   // Full turn: one pole per longitude, periodic. Partial turn: clamped, the end poles on the

@@ -165,9 +165,8 @@ BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, c
 
 }  // namespace detail
 
-namespace {
+namespace detail {
 
-/// The layers of a shape of revolution: the C2 sextic circle times each profile point.
 BasicLayers revolvedLayers(const ShapeFrame& frame, const C2SexticSpline& c2, const RevolvedProfile& profile,
                            bool sexticInV) {
   BasicLayers basic;
@@ -185,6 +184,12 @@ BasicLayers revolvedLayers(const ShapeFrame& frame, const C2SexticSpline& c2, co
   }
   return basic;
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::revolvedLayers;
 
 BlendComplex blendRevolved(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
                            CircleReparam method, Handle(Geom_BSplineSurface) ring, bool sexticInV) {

@@ -4,6 +4,7 @@
 // on which the joins and the edited structures (blend_join.cpp) build.
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <string>
 #include <vector>
 
 #include "fairsplines/blend_surface.hpp"
@@ -65,8 +66,9 @@ G2CircleSpline checkedLongitudes(const ShapeFrame& frame, const Eigen::VectorXd&
 /// The default free-form ring after a profile's end: 4 rows along the end tangent, the
 /// first half the last piece's length beyond the interface, a quarter apart; in u one
 /// pole per longitude (Boehm's form: pole i centred on knot u_i), periodic cubic.
+/// `which` names the interface in the message of defaultRingRows.
 Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& p,
-                                        const Eigen::VectorXd& knotsU);
+                                        const Eigen::VectorXd& knotsU, const char* which = "interface");
 
 // ---------------------------------------------------------------------------------------
 // The transition strip and the assembly of a complex (blend_surface.cpp)
@@ -85,10 +87,41 @@ struct BasicLayers {
   bool c2InV = false;
 };
 
+/// The layers of a shape of revolution: the C2 sextic circle `c2` times each profile point
+/// (the sextic profile pieces with sexticInV, else the cubic ones).
+BasicLayers revolvedLayers(const ShapeFrame& frame, const C2SexticSpline& c2, const RevolvedProfile& profile,
+                           bool sexticInV);
+
 /// Section 4.2 from the basic side's layers (C2 along u): the ring (default, or a user's
 /// with its period mapped onto the circle's and the pieces split at its knots), then the
 /// patches and the (6,5) strip from three layers on each side.
 BlendComplex assembleBlend(const ShapeFrame& frame, const G2CircleSpline& lon, const RevolvedProfile& profile,
                            BasicLayers basic, Handle(Geom_BSplineSurface) ring);
+
+// ---------------------------------------------------------------------------------------
+// Shapes in a join and edited control structures (blend_join.cpp)
+
+/// One shape of a join or a chain: its frame, the circle around the axis and the profile in
+/// its own direction (v increasing).
+struct JoinSide {
+  ShapeFrame frame;
+  G2CircleSpline lon;
+  RevolvedProfile profile;
+};
+
+/// The side of a shape. Throws the InputError of the shape's profile and longitudes, and
+/// "a cone needs a finite radius and slope".
+JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method);
+
+/// Throws InputError unless the profile's end (Interface::End) or start is off the axis
+/// ("the <name> shape's profile meets the axis (a pole) at the join").
+void checkJoinOffAxis(const JoinSide& side, Interface at, const std::string& name);
+
+/// Section 4.1 on every control layer of an edited structure of the side's shape (G2 cubic
+/// rows along the profile), with the scalars betaT around the axis (empty: beta), every
+/// arc-to-arc join then made C2 by eq. (11). Throws InputError for a structure of another
+/// size, a non-finite point or a non-positive weight.
+BasicLayers editedLayers(const JoinSide& side, const G2Surface& edited, CircleReparam method,
+                         const Eigen::VectorXd& betaT = Eigen::VectorXd());
 
 }  // namespace fairsplines::detail

@@ -6,6 +6,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Shell.hxx>
+#include <optional>
 #include <vector>
 
 #include "fairsplines/blend_shapes.hpp"
@@ -162,6 +163,45 @@ struct ShapeOfRevolution {
 /// shapes.
 BlendComplex joinShapes(const ShapeOfRevolution& a, const ShapeOfRevolution& b,
                         CircleReparam method = CircleReparam::Rho, bool sexticInV = true, bool naive = false);
+
+/// One shape of a chain (blendChain): a shape of revolution, joined as it is or, with
+/// `edited` (its G2Surface with control points changed, Figs. 1c/d), as edited.
+struct ChainShape {
+  ShapeOfRevolution shape;
+  std::optional<G2Surface> edited;
+};
+
+/// What closes one end of a chain: nothing (the profile's end is a boundary of the complex)
+/// or a free-form ring, the user's (`net`: bicubic, periodic in u for a full turn, clamped in
+/// v, its first row at the shape's profile end, leaving the shape) or, with `net` null, the
+/// default ring continuing the shape (detail::defaultRingRows gives its room).
+struct ChainEnd {
+  bool ring = false;
+  Handle(Geom_BSplineSurface) net;
+  static ChainEnd open() { return ChainEnd(); }
+  static ChainEnd freeForm(Handle(Geom_BSplineSurface) net = nullptr) { return ChainEnd{true, std::move(net)}; }
+};
+
+/// Several interfaces on one complex (issue 15): shapes of revolution in order along their
+/// profiles, the end of each joined to the start of the next by one (6,5) transition row as
+/// joinShapes does (Figs. 9, 11, 12), and a free-form ring (Section 4.2) at the first shape's
+/// start and at the last one's end where `start` / `end` ask for one: a ball joint's
+/// spherical band with free-form on both sides, a cylinder joined at both ends, a post and a
+/// dome with free-form below the post. One circle conversion serves every strip: the scalars
+/// around the axis are the geometric mean over the shapes, betaT_i = (prod_s beta_i^s)^(1/S)
+/// (Fig. 11's average sqrt(beta^top beta^bottom) for two), every arc is split into the
+/// least common multiple of the pieces the shapes give it (Fig. 12), and the pieces are split
+/// at a user ring's u knots (exactly, de Casteljau). Every strip has the v length of the basic
+/// row before it, and the next shape or ring is scaled to start with that length (scalar 1
+/// across both seams). Rows in v: the start ring (its rows reversed, so v increases towards
+/// the shapes), strip, shape 1, strip, shape 2, ..., strip, end ring. Edited shapes give G2
+/// cubic rows along their profile (no single surface); otherwise sexticInV gives one C2
+/// tensor grid (singleSurface). rowsBasic, rowsTransition and rowsFreeForm count all rows of
+/// each role. Throws InputError for no shapes, one shape with no ring, shapes with different
+/// arc counts or closedness, an interface on the axis (naming the shape and its end), a ring
+/// that does not match or has no room, or the checks of the shapes.
+BlendComplex blendChain(const std::vector<ChainShape>& shapes, const ChainEnd& start, const ChainEnd& end,
+                        CircleReparam method = CircleReparam::Rho, bool sexticInV = true);
 
 /// Section 4.2 for an edited control structure (Figs. 1c/d, 4a): `edited` is the shape's
 /// G2Surface (sphereZone, cylinder, cone, torus of the same angles) with control points and
