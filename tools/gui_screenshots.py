@@ -154,6 +154,12 @@ def main(out):
     grab(out, "blend_shape_panel", "viewIsometric")
     close_panel(panel)
 
+    doc = new_doc("BallJoint")
+    band = make_blend_shape(doc, "Sphere zone", interface="Both ends")
+    panel = edit(band)
+    grab(out, "blend_shape_both_ends_panel", "viewIsometric")
+    close_panel(panel)
+
     doc = new_doc("FairBlend")
     sys.path.insert(0, REPO)
     from tests.scenes import line_into_arc

@@ -34,6 +34,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>A B-spline face, bicubic and periodic around the axis, its first row near the start of the profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Add a mark in the middle of the widest gap</source>
         <translation type="unfinished"></translation>
@@ -89,6 +94,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>At the end: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>At the start: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/blend_shape.py"/>
         <source>Auto</source>
         <translation type="unfinished"></translation>
@@ -106,6 +121,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Both ends</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -172,6 +192,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Default ring (continues the shape)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Default ring at the start</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -678,6 +703,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Use selected face at the start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/form.py"/>
         <source>Warning: {}</source>
         <translation type="unfinished"></translation>
@@ -694,7 +724,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
-        <source>Which end of the profile joins the free-form side; Auto: the end, or the start where the end is a pole</source>
+        <source>Which end of the profile joins the free-form side; Auto: the end, or the start where the end is a pole; Both ends: free-form on both sides, as for a ball joint&apos;s band. Joined to another shape: Start adds free-form below this shape, End beyond the other one</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

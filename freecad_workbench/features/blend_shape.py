@@ -20,7 +20,10 @@ instead of the default ring (bicubic, periodic
 around the axis, clamped along it: any knots, they are merged with the shape's); it moves
 with its object. `Interface` picks the end of the profile the free-form side joins (Auto:
 the end, or the start where the end is a pole, as for a dome, or where the start leaves the
-default ring more room). `Patches` counts the patches per role. Bad input (angles that do
+default ring more room), or "Both ends" (a ball joint's band, a cylinder joined at both
+ends: `FreeForm` at the end, `FreeFormStart` at the start, default rings where empty;
+`fw.blend_chain`). With `JoinTo`, Start adds free-form below this shape, End beyond the
+joined one, Both ends both, all in one C2 complex. `Patches` counts the patches per role. Bad input (angles that do
 not increase, a radius that is not positive, an end with no room for the default ring, a
 face that is not a matching B-spline ring) keeps the last
 good shape and puts the reason in `Status`.
@@ -47,6 +50,7 @@ INTERFACES = (
     QT_TRANSLATE_NOOP("FairSplines", "Auto"),
     QT_TRANSLATE_NOOP("FairSplines", "End"),
     QT_TRANSLATE_NOOP("FairSplines", "Start"),
+    QT_TRANSLATE_NOOP("FairSplines", "Both ends"),
 )
 CONTINUITIES = ("C2", "C1")
 
@@ -119,8 +123,11 @@ _PROPERTIES = (
      "double strip of Section 5 to biquadratic NURBS", "C2", 0),
     ("App::PropertyLinkSub", "FreeForm", "A B-spline face to join instead of the default ring: bicubic, periodic "
      "around the axis (in u), clamped along it, its first row near the interface", None, 0),
-    ("App::PropertyEnumeration", "Interface", "Where the free-form side joins the profile: Auto (its end, or its "
-     "start where the end is a pole), End or Start", "Auto", 0),
+    ("App::PropertyEnumeration", "Interface", "Where free-form joins the profile: Auto (its end, or its start where "
+     "the end is a pole), End, Start, or Both ends (FreeForm at the end, FreeFormStart at the start). With JoinTo "
+     "the ends are those of the pair: Start below this shape, End beyond the joined one, Auto neither", "Auto", 0),
+    ("App::PropertyLinkSub", "FreeFormStart", "Both ends: a B-spline face to join at the start of the profile "
+     "instead of the default ring (as FreeForm, its first row near the start)", None, 0),
     ("App::PropertyLink", "JoinTo", "Another Blend basic shape joined instead of a free-form ring (Figs. 9-12): "
      "the end of this profile to the start of that one's, both kept exact; same number of arcs around", None, 0),
     ("App::PropertyBool", "Naive", "Build the naive blend of Fig. 2a instead (not C2), for comparison", False, 0),
@@ -136,7 +143,7 @@ class BlendShape(FeatureProxy):
     shell whose patches share their edges."""
 
     Type = "BlendShape"
-    VERSION = 2  # 2: FreeForm, Interface, JoinTo, Continuity
+    VERSION = 3  # 2: FreeForm, Interface, JoinTo, Continuity; 3: Interface "Both ends", FreeFormStart
     GROUP = "Blend basic shape"
     PROPERTIES = _PROPERTIES
     ENUMERATIONS = {"Kind": KINDS, "Method": METHODS, "Interface": INTERFACES, "Continuity": CONTINUITIES}
@@ -225,10 +232,10 @@ def basic_shape(obj, placement=None):
     return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile, **frame)
 
 
-def freeform_surface(obj):
-    """The Part.BSplineSurface of obj's FreeForm face in obj's local coordinates, or None
-    (the default ring). InputError if the link is not a B-spline face."""
-    link = obj.FreeForm
+def freeform_surface(obj, name="FreeForm"):
+    """The Part.BSplineSurface of obj's FreeForm (or FreeFormStart) face in obj's local
+    coordinates, or None (the default ring). InputError if the link is not a B-spline face."""
+    link = getattr(obj, name)
     if link is None or link[0] is None:
         return None
     source, subs = link
@@ -236,21 +243,21 @@ def freeform_surface(obj):
     origin = f"{source.Label}.{sub}" if sub else source.Label
     shape = getattr(source, "Shape", None)
     if shape is None or shape.isNull():
-        raise InputError(f"FreeForm {origin} has no shape")
+        raise InputError(f"{name} {origin} has no shape")
     if sub:
         try:
             face = shape.getElement(sub)
         except Exception:  # noqa: BLE001 (FreeCAD raises plain exceptions for a bad name)
-            raise InputError(f"FreeForm {origin} does not exist") from None
+            raise InputError(f"{name} {origin} does not exist") from None
     elif len(shape.Faces) == 1:
         face = shape.Faces[0]
     else:
-        raise InputError(f"FreeForm {origin} has {len(shape.Faces)} faces: pick one")
+        raise InputError(f"{name} {origin} has {len(shape.Faces)} faces: pick one")
     if not isinstance(face, Part.Face):
-        raise InputError(f"FreeForm {origin} is not a face")
+        raise InputError(f"{name} {origin} is not a face")
     surface = face.Surface
     if not isinstance(surface, Part.BSplineSurface):
-        raise InputError(f"FreeForm {origin} is a {type(surface).__name__}, not a B-spline surface")
+        raise InputError(f"{name} {origin} is a {type(surface).__name__}, not a B-spline surface")
     surface = surface.copy()
     surface.transform(obj.Placement.inverse().toMatrix())
     return surface
@@ -269,11 +276,15 @@ def blend_result(obj):
         # the other shape in this object's local coordinates
         relative = obj.Placement.inverse().multiply(other.Placement)
         second = basic_shape(other, relative)
+        if obj.Interface != "Auto":
+            return _chain(obj, [shape, second])
         if obj.Naive:
             if obj.Continuity == "C1":
                 raise InputError("the naive join has no C1 variant: use C2, or turn Naive off")
             return blend.join_naive(shape, second)
         return blend.join_basic_shapes(shape, second, continuity=obj.Continuity, method=obj.Method)
+    if obj.Interface == "Both ends":
+        return _chain(obj, [shape])
     ring = freeform_surface(obj)
     at = None if obj.Interface == "Auto" else obj.Interface.lower()
     if obj.Naive:
@@ -281,17 +292,42 @@ def blend_result(obj):
     return blend.blend_basic_shape(shape, freeform=ring, continuity=obj.Continuity, method=obj.Method, at=at)
 
 
+def _chain(obj, shapes_):
+    """Free-form at both ends of the profile, or a join with free-form beyond it
+    (fw.blend_chain): C2 only, not naive."""
+    if obj.Continuity == "C1":
+        raise InputError(f"C1 joins free-form at one end of the profile: set Interface to Auto, End or Start "
+                         f"(not {obj.Interface}), or use C2")
+    if obj.Naive:
+        raise InputError(f"the naive blend joins at one end: turn Naive off for Interface {obj.Interface}")
+    both = obj.Interface == "Both ends"
+    start = end = None
+    if obj.Interface in ("Start", "Both ends"):
+        start = (freeform_surface(obj, "FreeFormStart") if both else freeform_surface(obj)) or "default"
+    if obj.Interface in ("End", "Both ends"):
+        end = freeform_surface(obj) or "default"
+    return blend.blend_chain(shapes_, start=start, end=end, method=obj.Method)
+
+
 def is_blend_shape(obj):
     return isinstance(getattr(obj, "Proxy", None), BlendShape)
 
 
+def _face_link(freeform, name):
+    source, sub = freeform if isinstance(freeform, (tuple, list)) else (freeform, "")
+    if not isinstance(source, FreeCAD.DocumentObject):
+        raise InputError(f"{name} is not a document object: {source!r}")
+    return (source, [sub]) if sub else source
+
+
 def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, freeform=None,
-                     interface="Auto", join_to=None, continuity="C2", **dimensions):
+                     interface="Auto", join_to=None, continuity="C2", freeform_start=None, **dimensions):
     """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
     step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
     units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
     Uniform is given. freeform: a B-spline face to join, as (object, "FaceN") or an object
-    with one face (None: the default ring); interface: "Auto", "End" or "Start". Bad
+    with one face (None: the default ring); interface: "Auto", "End", "Start" or "Both ends"
+    (freeform_start: the face at the start for "Both ends"). Bad
     dimensions leave the object with the message in its Status; unknown kinds, methods,
     interfaces or dimensions raise InputError. join_to: another Blend basic shape to join
     (its basic shape instead of a ring; its own view is hidden in the GUI)."""
@@ -303,12 +339,7 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         raise InputError(f"unknown continuity {continuity!r}: use one of {', '.join(CONTINUITIES)}")
     if interface not in INTERFACES:
         raise InputError(f"unknown interface {interface!r}: use one of {', '.join(INTERFACES)}")
-    link = None
-    if freeform is not None:
-        source, sub = freeform if isinstance(freeform, (tuple, list)) else (freeform, "")
-        if not isinstance(source, FreeCAD.DocumentObject):
-            raise InputError(f"freeform is not a document object: {source!r}")
-        link = (source, [sub]) if sub else source
+    link = None if freeform is None else _face_link(freeform, "freeform")
     if join_to is not None and not is_blend_shape(join_to):
         raise InputError(f"join_to is not a Blend basic shape: {join_to!r}")
     allowed = set(KIND_PROPERTIES[kind]) | {"Uniform"}
@@ -318,6 +349,7 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
     values = dict(KIND_DEFAULTS[kind], **dimensions)
     if "Uniform" not in dimensions:
         values["Uniform"] = not any(p in dimensions for p in KIND_LISTS[kind])
+    link_start = None if freeform_start is None else _face_link(freeform_start, "freeform_start")
     with undo_step(doc, "Create blend basic shape"):
         obj = doc.addObject("Part::FeaturePython", name or "BlendShape")
         BlendShape(obj)
@@ -328,6 +360,8 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
         obj.Continuity = continuity
         if link is not None:
             obj.FreeForm = link
+        if link_start is not None:
+            obj.FreeFormStart = link_start
         if join_to is not None:
             obj.JoinTo = join_to
             if FreeCAD.GuiUp:

@@ -2,6 +2,7 @@
 feature in one undo step and opens its panel, the panel drives the feature live (kind,
 dimensions, uniform counts or typed lists, method, naive), Cancel restores, the shell is
 shown with zebra stripes; screenshots in out/test-artifacts/."""
+import math
 import os
 
 import numpy as np
@@ -257,6 +258,37 @@ def test_panel_takes_a_selected_bspline_face_as_the_free_form_side(scene, artifa
     panel.reject()
     gui().updateGui()
     assert blend.FreeForm is None
+
+
+def test_panel_offers_free_form_at_both_ends(scene, artifacts):
+    # The second interface: a sphere band (-40..45 degrees) with free-form above and below.
+    from freecad_workbench.features.blend_shape import INTERFACES
+
+    doc = scene
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    default = blend.Patches
+    assert panel.start_box.isHidden()  # one interface: no second free-form side offered
+    panel.interface.setCurrentIndex(INTERFACES.index("Both ends"))
+    assert blend.Interface == "Both ends" and blend.Status == "ok", blend.Status
+    counts = dict(item.rsplit(" ", 1) for item in blend.Patches.split(", "))
+    single = dict(item.rsplit(" ", 1) for item in default.split(", "))
+    assert int(counts["freeform"]) == 2 * int(single["freeform"])
+    assert int(counts["transition"]) == 2 * int(single["transition"])
+    assert not panel.start_box.isHidden()
+    assert panel.freeform_label.text().startswith("At the end: Default ring")
+    assert panel.start_label.text().startswith("At the start: Default ring")
+    z = np.array([v.Point.z for v in blend.Shape.Vertexes])
+    assert z.min() < 10 * math.sin(math.radians(-40)) - 1 and z.max() > 10 * math.sin(math.radians(45)) + 1
+    panel.use_selected_face("FreeFormStart")  # nothing selected: a message, nothing changed
+    assert "select a B-spline face" in panel.status_label.text() and blend.FreeFormStart is None
+    gui().updateGui()
+    image = screenshot(doc, os.path.join(artifacts, "blend_both_ends_zebra.png"))
+    dark, white = stripe_pixels(image)
+    assert dark > 5000 and white > 5000, (dark, white)
+    panel.reject()
+    gui().updateGui()
+    assert blend.Interface == "Auto" and blend.Patches == default
 
 
 def test_panel_joins_another_blend_shape_and_cancel_restores(scene, artifacts):

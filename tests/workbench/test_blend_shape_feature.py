@@ -165,13 +165,14 @@ def test_factory_rejects_unknown_kinds_methods_and_dimensions(doc):
     assert not doc.Objects
 
 
-def _ring_object(doc, radius=6.0, z0=8.5, poles=9, name="Ring"):
-    """A periodic bicubic ring around the Z axis, on its own uniform knots, as a Part::Feature."""
+def _ring_object(doc, radius=6.0, z0=8.5, poles=9, name="Ring", dz=0.6):
+    """A periodic bicubic ring around the Z axis, on its own uniform knots, as a Part::Feature
+    (its rows dz apart along Z)."""
     import math
 
     import Part
 
-    rows = [[FreeCAD.Vector(radius * math.cos(a), radius * math.sin(a), z0 + 0.6 * j) for j in range(4)]
+    rows = [[FreeCAD.Vector(radius * math.cos(a), radius * math.sin(a), z0 + dz * j) for j in range(4)]
             for a in np.linspace(0, 2 * math.pi, poles, endpoint=False)]
     ring = Part.BSplineSurface()
     ring.buildFromPolesMultsKnots(rows, [1] * (poles + 1), [4, 4], [float(k) for k in range(poles + 1)], [0.0, 1.0],
@@ -329,3 +330,76 @@ def test_an_empty_profile_range_blames_the_range_not_the_count(doc):
     doc.recompute()
     assert_failed_like_freecad(blend, "ProfileEnd (0) must be greater than ProfileStart (0)")
     assert "ProfileCount" not in blend.Status
+
+
+def test_both_ends_of_a_band_join_free_form_in_one_complex(doc, tmp_path):
+    # The second interface: a sphere band with a linked ring above and one below, as a ball joint.
+    above = _ring_object(doc, name="Above")
+    below = _ring_object(doc, radius=6.5, z0=-8.5, dz=-0.6, name="Below")
+    obj = make_blend_shape(doc, "Sphere zone", interface="Both ends", freeform=(above, "Face1"),
+                           freeform_start=(below, "Face1"))
+    assert obj.Status == "ok", obj.Status
+    assert obj.Shape.isValid()
+    counts = dict(item.split() for item in obj.Patches.split(", "))
+    strips = int(counts["transition"])
+    assert int(counts["freeform"]) == strips  # one ring span per strip patch, two rings
+    faces = obj.Shape.Faces
+    on_above = [f for f in faces if _distance_to(above.Shape.Faces[0].Surface, surface_points(f, 3)) < 1e-9]
+    on_below = [f for f in faces if _distance_to(below.Shape.Faces[0].Surface, surface_points(f, 3)) < 1e-9]
+    assert len(on_above) + len(on_below) == int(counts["freeform"]) and on_above and on_below
+    points = surface_points(obj.Shape)
+    on_sphere = np.abs(np.linalg.norm(points, axis=1) - 10.0) < 1e-9
+    assert on_sphere.sum() > 100
+    # The default rings where no face is linked: the same counts as the single-interface blend, twice.
+    obj.FreeForm = None
+    obj.FreeFormStart = None
+    doc.recompute()
+    single = make_blend_shape(doc, "Sphere zone")
+    both = dict(item.split() for item in obj.Patches.split(", "))
+    one = dict(item.split() for item in single.Patches.split(", "))
+    assert obj.Status == "ok" and int(both["freeform"]) == 2 * int(one["freeform"])
+    # C1 and the naive blend join at one end: the message, and the last good shape kept.
+    good = surface_points(obj.Shape)
+    obj.Continuity = "C1"
+    doc.recompute()
+    assert "one end" in obj.Status
+    np.testing.assert_allclose(surface_points(obj.Shape), good, atol=1e-12)
+    obj.Continuity = "C2"
+    obj.Naive = True
+    doc.recompute()
+    assert "Naive off" in obj.Status
+    obj.Naive = False
+    doc.recompute()
+    assert obj.Status == "ok"
+    # Save and reopen keep the interface.
+    path = str(tmp_path / "both.FCStd")
+    doc.saveAs(path)
+    name, obj_name = doc.Name, obj.Name
+    FreeCAD.closeDocument(name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        again = reopened.getObject(obj_name)
+        assert again.Interface == "Both ends"
+        again.touch()
+        reopened.recompute()
+        assert again.Status == "ok"
+        np.testing.assert_allclose(surface_points(again.Shape), good, atol=1e-12)
+    finally:
+        FreeCAD.closeDocument(reopened.Name)
+        FreeCAD.newDocument(name)
+
+
+def test_a_join_with_free_form_below_the_first_shape(doc):
+    dome = make_blend_shape(doc, "Sphere zone", name="Dome", Radius=10.0, Uniform=True, ProfileStart=15.0,
+                            ProfileEnd=90.0, ProfileCount=2,
+                            placement=FreeCAD.Placement(FreeCAD.Vector(0, 0, 22), FreeCAD.Rotation()))
+    post = make_blend_shape(doc, "Cylinder", name="Post", Radius=10.0, join_to=dome, interface="Start")
+    assert post.Status == "ok", post.Status
+    counts = dict(item.split() for item in post.Patches.split(", "))
+    assert int(counts["freeform"]) == 6 and int(counts["transition"]) == 12  # a ring below, two strips
+    points = surface_points(post.Shape)
+    assert points[:, 2].min() < -1.0 and points[:, 2].max() > 31.9  # below the post, up to the dome's pole
+    # End would be beyond the dome's pole: refused with the reason.
+    post.Interface = "End"
+    doc.recompute()
+    assert "pole" in post.Status

@@ -93,8 +93,8 @@ class BlendShapePanel(LiveEditPanel):
         self.doc = obj.Document
         dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
         self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
-                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "Interface", "JoinTo",
-                                 "Continuity"] + dimensions)
+                                ["Kind", "Uniform", "Method", "Naive", "FreeForm", "FreeFormStart", "Interface",
+                                 "JoinTo", "Continuity"] + dimensions)
         self._updating = False
         self.widgets = {}
 
@@ -144,7 +144,10 @@ class BlendShapePanel(LiveEditPanel):
         self.interface.addItems([translate("FairSplines", i) for i in INTERFACES])
         self.interface.setCurrentIndex(INTERFACES.index(obj.Interface))
         self.interface.setToolTip(translate("FairSplines", "Which end of the profile joins the free-form side; "
-                                                           "Auto: the end, or the start where the end is a pole"))
+                                                           "Auto: the end, or the start where the end is a pole; "
+                                                           "Both ends: free-form on both sides, as for a ball "
+                                                           "joint's band. Joined to another shape: Start adds "
+                                                           "free-form below this shape, End beyond the other one"))
         self.interface.currentIndexChanged.connect(lambda i: self.set_interface(INTERFACES[i]))
         bottom.addRow(translate("FairSplines", "Join at"), self.interface)
         layout.addWidget(join_box)
@@ -162,6 +165,21 @@ class BlendShapePanel(LiveEditPanel):
         buttons.addWidget(self.use_face)
         buttons.addWidget(self.default_ring)
         freeform_layout.addLayout(buttons)
+        # The second interface (Both ends): the free-form side at the start of the profile.
+        self.start_box = QtWidgets.QWidget()
+        start_layout = QtWidgets.QVBoxLayout(self.start_box)
+        start_layout.setContentsMargins(0, 0, 0, 0)
+        self.start_label = wrapped_label()
+        start_layout.addWidget(self.start_label)
+        self.use_face_start = QtWidgets.QPushButton(translate("FairSplines", "Use selected face at the start"))
+        self.use_face_start.setToolTip(translate("FairSplines", "A B-spline face, bicubic and periodic around the "
+                                                                "axis, its first row near the start of the profile"))
+        self.use_face_start.clicked.connect(lambda: self.use_selected_face("FreeFormStart"))
+        self.default_ring_start = QtWidgets.QPushButton(translate("FairSplines", "Default ring at the start"))
+        self.default_ring_start.clicked.connect(lambda: self.set_freeform(None, "FreeFormStart"))
+        start_layout.addWidget(self.use_face_start)
+        start_layout.addWidget(self.default_ring_start)
+        freeform_layout.addWidget(self.start_box)
         join_row = form_rows()
         self.join_to = compact(QtWidgets.QComboBox(), 120)
         self.join_to.setToolTip(translate("FairSplines", "Join another Blend basic shape instead of a ring (Figs. "
@@ -303,12 +321,13 @@ class BlendShapePanel(LiveEditPanel):
     def set_interface(self, interface):
         self._set_choice("Interface", interface, self.interface, INTERFACES)
 
-    def set_freeform(self, link):
-        """Join the linked B-spline face ((object, ["FaceN"])), or the default ring (None)."""
-        current = self.obj.FreeForm
+    def set_freeform(self, link, prop="FreeForm"):
+        """Join the linked B-spline face ((object, ["FaceN"])), or the default ring (None), at
+        the interface (FreeForm) or at the start for Both ends (FreeFormStart)."""
+        current = getattr(self.obj, prop)
         if link is None and (current is None or current[0] is None):
             return
-        self._apply([("FreeForm", link)])
+        self._apply([(prop, link)])
 
     def _fill_join_choices(self):
         """(none) and every other Blend basic shape of the document."""
@@ -331,17 +350,18 @@ class BlendShapePanel(LiveEditPanel):
         if other is not None:
             other.ViewObject.Visibility = False
 
-    def use_selected_face(self):
-        """The face selected in the 3D view (not one of this object's own) as the free-form side."""
+    def use_selected_face(self, prop="FreeForm"):
+        """The face selected in the 3D view (not one of this object's own) as the free-form side
+        (prop FreeFormStart: the one at the start, for Both ends)."""
         for sel in FreeCADGui.Selection.getSelectionEx(self.doc.Name):
             if sel.Object == self.obj:
                 continue
             faces = [n for n in sel.SubElementNames if n.startswith("Face")]
             if faces:
-                self.set_freeform((sel.Object, [faces[0]]))
+                self.set_freeform((sel.Object, [faces[0]]), prop)
                 return
             if len(getattr(sel.Object, "Shape", None) and sel.Object.Shape.Faces or []) == 1:
-                self.set_freeform((sel.Object, ["Face1"]))
+                self.set_freeform((sel.Object, ["Face1"]), prop)
                 return
         self.show_status(translate("FairSplines", "select a B-spline face of another object first"))
 
@@ -356,12 +376,22 @@ class BlendShapePanel(LiveEditPanel):
 
     def refresh(self):
         self.patches_label.setText(translate("FairSplines", "Patches: {}").format(self.obj.Patches))
-        link = self.obj.FreeForm
+        both = self.obj.Interface == "Both ends"
+        text = _link_text(self.obj.FreeForm)
         if self.obj.JoinTo is not None:
-            self.freeform_label.setText(translate("FairSplines", "Joined to {}").format(self.obj.JoinTo.Label))
-        elif link is None or link[0] is None:
-            self.freeform_label.setText(translate("FairSplines", "Default ring (continues the shape)"))
-        else:
-            subs = ", ".join(link[1]) if link[1] else ""
-            self.freeform_label.setText(f"{link[0].Label}.{subs}" if subs else link[0].Label)
+            text = translate("FairSplines", "Joined to {}").format(self.obj.JoinTo.Label)
+        elif both:
+            text = translate("FairSplines", "At the end: {}").format(text)
+        self.freeform_label.setText(text)
+        self.start_box.setVisible(both and self.obj.JoinTo is None)
+        self.start_label.setText(translate("FairSplines", "At the start: {}").format(
+            _link_text(self.obj.FreeFormStart)))
         self.show_status(self.obj.Status)
+
+
+def _link_text(link):
+    """A free-form link as the panel shows it: the face's object and name, or the default ring."""
+    if link is None or link[0] is None:
+        return translate("FairSplines", "Default ring (continues the shape)")
+    subs = ", ".join(link[1]) if link[1] else ""
+    return f"{link[0].Label}.{subs}" if subs else link[0].Label
