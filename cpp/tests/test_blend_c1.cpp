@@ -65,8 +65,10 @@ C1Seams c1Seams(const BlendComplex& c, const Eigen::VectorXd* knotsU = nullptr) 
     const int kPrev = (k + c.piecesU - 1) % c.piecesU;
     const double hPrev = ku[kPrev + 1] - ku[kPrev], h = ku[k + 1] - ku[k];
     for (int v = 0; v < rows; ++v) {
-      compare(at.at({kPrev, v}), at.at({k, v}), true, h / hPrev, report.alongURow[v]);
-      report.alongU = std::max(report.alongU, report.alongURow[v]);
+      if (k > 0 || c.closedU) {  // a partial turn has no closing seam
+        compare(at.at({kPrev, v}), at.at({k, v}), true, h / hPrev, report.alongURow[v]);
+        report.alongU = std::max(report.alongU, report.alongURow[v]);
+      }
       if (v == 0 || (v < c.rowsBasic && !c.basicC2InV)) continue;
       const double beta = (c.knotsV[v + 1] - c.knotsV[v]) / (c.knotsV[v] - c.knotsV[v - 1]);
       double& bucket = v == c.rowsBasic       ? report.basicTransition
@@ -335,8 +337,6 @@ TEST(C1Blend, BadInputRaisesInputErrorNamingTheProblem) {
                     g1SphereZone(f, 1.0, nonUniformTurn(), vec({-kPi / 2, kPi / 2}));
                   }),
                   "latitude arc 0"));
-  // Not a full turn.
-  EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1Cone(f, 1.0, 0.0, vec({0.0, 1.0, 2.0}), kHeights)); }), "full turn"));
   // The interface at a pole.
   EXPECT_TRUE(has(inputErrorOf([&] { blendC1(g1SphereZone(f, 1.0, nonUniformTurn(), vec({0.0, kPi / 2}))); }), "pole"));
   // Non-positive radii.
@@ -414,7 +414,60 @@ TEST(C1Join, CylinderIntoADomeAndBadInput) {
   }
   EXPECT_LT(worst, 1e-10);
   EXPECT_THROW(joinShapesC1(dome, post), InputError);  // the dome's end is its pole
-  EXPECT_THROW(joinShapesC1(post, g1Cone(f, 1.0, 0.0, vec({0.0, 2.0, 4.0, 2 * kPi}), vec({2.0, 3.0}))), InputError);
+  // One full turn and one partial one cannot share a strip.
+  EXPECT_THROW(joinShapesC1(post, g1Cone(f, 1.0, 0.0, vec({0.0, 2.0, 4.0}), vec({2.0, 3.0}))), InputError);
+}
+
+TEST(C1Blend, PartialTurnsAreC1AndStayExact) {
+  // Issue 15: Section 5 over part of a turn, the default ring clamped at the open ends.
+  const ShapeFrame f = tilted();
+  const Eigen::VectorXd around = vec({0.3, 1.0, 2.4, 3.1, 4.0});  // 3.7 radians, non-uniform
+  const G1RevolvedShape cone = g1Cone(f, 1.5, 0.2, around, kHeights);
+  const G1RevolvedShape zone = g1SphereZone(f, 1.0, around, kLatitudes);
+  C1BlendOptions both;
+  both.quarticInV = true;  // C1 along the sphere's profile too: one C1 surface
+  for (const G1RevolvedShape* shape : {&cone, &zone}) {
+    const BlendComplex c = blendC1(*shape, nullptr, both);
+    EXPECT_FALSE(c.closedU);
+    EXPECT_EQ(c.piecesU, 2 * 4);
+    EXPECT_LT(c1Seams(c).worst(), 1e-8);
+    EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
+    EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+    // Without eta the same check fails: it can fail on an open turn too.
+    C1BlendOptions naive;
+    naive.withoutEta = true;
+    EXPECT_GT(c1Seams(blendC1(*shape, nullptr, naive)).alongU, 1e-3);
+  }
+  EXPECT_LT(offShape(basicOf(blendC1(cone)), coneDistance(f, 1.5, 0.2)), 1e-10 * 4);
+  EXPECT_LT(offShape(basicOf(blendC1(zone)), sphereDistance(f, 1.0)), 1e-10);
+  // The ring's knots span the partial turn.
+  const Eigen::VectorXd T = ringKnotsC1(around);
+  EXPECT_EQ(T.size(), 5);
+}
+
+TEST(C1Join, DifferentPartitionsMeetInTJoints) {
+  // Figs. 14, 15e: a post of 7 arcs into a dome of 4; each side keeps its own scalars, the
+  // transversal 1-jets are split to the finest partition, and the complex is C1 throughout.
+  const ShapeFrame f = tilted();
+  ShapeFrame top = f;
+  top.origin = f.origin + 2.5 * f.z;
+  const G1RevolvedShape post = g1Cone(f, 1.0, 0.0, nonUniformTurn(), vec({0.0, 1.0, 1.8}));
+  const G1RevolvedShape dome = g1SphereZone(top, 1.0, vec({0.0, 1.4, 3.3, 4.5, 2 * kPi}), vec({0.2, 0.9, 1.4}));
+  const BlendComplex c = joinShapesC1(post, dome);
+  EXPECT_GT(c.piecesU, 2 * 7);  // the post's 14 pieces and the dome's 8, merged
+  EXPECT_LT(c1Seams(c).worst(), 1e-8);
+  EXPECT_LT(offShape(basicOf(c),
+                     [&](const gp_Pnt& q) {
+                       const double onPost = std::hypot(localOf(f, q).x(), localOf(f, q).y()) - 1.0;
+                       const double onDome = localOf(top, q).norm() - 1.0;
+                       return std::min(std::abs(onPost), std::abs(onDome));
+                     }),
+            1e-10);
+  EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
+  EXPECT_GE(singleSurface(c, 1e-9, 1)->Continuity(), GeomAbs_C1);
+  // Judged on uniform knots instead of the merged ones, the complex fails the check.
+  Eigen::VectorXd coarse = Eigen::VectorXd::LinSpaced(c.piecesU + 1, 0.0, c.piecesU);
+  EXPECT_GT(c1Seams(c, &coarse).alongU, 1e-3);
 }
 
 TEST(C1Blend, RingOnOtherKnotsSharesTheParameterizationAndStaysExact) {

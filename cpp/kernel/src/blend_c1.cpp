@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/g1_to_c1.hpp"
@@ -158,21 +159,28 @@ ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
   return out;
 }
 
-/// An empty Section 5 complex over the arc knots T: smoothness 1, two strip rows, closed in
-/// u, two quartics of half the arc's interval per arc (they join with scalar 1).
-BlendComplex c1Complex(const Eigen::VectorXd& T) {
+/// Eq. (12)'s piece knots from the arc knots T: two quartics of half the arc's interval per
+/// arc (they join with scalar 1).
+Eigen::VectorXd halfArcKnots(const Eigen::VectorXd& T) {
   const int n = static_cast<int>(T.size()) - 1;
+  Eigen::VectorXd out(2 * n + 1);
+  for (int i = 0; i < n; ++i) {
+    out[2 * i] = T[i];
+    out[2 * i + 1] = (T[i] + T[i + 1]) / 2;
+  }
+  out[2 * n] = T[n];
+  return out;
+}
+
+/// An empty Section 5 complex over the piece knots `knotsU`: smoothness 1, two strip rows,
+/// closed in u for a full turn.
+BlendComplex c1Complex(const Eigen::VectorXd& knotsU, bool closed) {
   BlendComplex out;
   out.smoothness = 1;
   out.rowsTransition = 2;
-  out.closedU = true;
-  out.piecesU = 2 * n;
-  out.knotsU.resize(2 * n + 1);
-  for (int i = 0; i < n; ++i) {
-    out.knotsU[2 * i] = T[i];
-    out.knotsU[2 * i + 1] = (T[i] + T[i + 1]) / 2;
-  }
-  out.knotsU[2 * n] = T[n];
+  out.closedU = closed;
+  out.piecesU = static_cast<int>(knotsU.size()) - 1;
+  out.knotsU = knotsU;
   return out;
 }
 
@@ -289,9 +297,8 @@ Eigen::VectorXd ringKnotsC1(const Eigen::VectorXd& angles, const Eigen::VectorXd
   Eigen::VectorXd beta;
   bool closed = false;
   g1Circle(angles, q, beta, closed);
-  if (!closed) throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
   if (betaT.size() != 0 && betaT.size() != beta.size()) throw InputError("betaT needs one scalar per arc");
-  return arcKnotsC1(betaT.size() ? betaT : beta, true);
+  return arcKnotsC1(betaT.size() ? betaT : beta, closed);
 }
 
 Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Eigen::VectorXd& knotsU) {
@@ -301,48 +308,59 @@ Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Ei
   const Eigen::Vector2d base = shape.end + rows.offset * shape.tangent;
   const double step = rows.step;
   const ShapeFrame& f = shape.frame;
-  TColgp_Array2OfPnt poles(1, n, 1, 3);
+  const bool closed = shape.closedU;
+  // Full turn: periodic, one pole per arc. Partial turn: clamped, n + 2 poles, the end ones
+  // on the circle at the first and last angle.
+  const int poleCount = closed ? n : n + 2;
+  TColgp_Array2OfPnt poles(1, poleCount, 1, 3);
   for (int j = 0; j < 3; ++j) {
     const Eigen::Vector2d rz = base + j * step * shape.tangent;
+    auto at = [&](double theta, double rho) {
+      const Eigen::Vector3d q = f.origin + rho * (std::cos(theta) * f.x + std::sin(theta) * f.y) + rz.y() * f.z;
+      return gp_Pnt(q.x(), q.y(), q.z());
+    };
     for (int i = 0; i < n; ++i) {
       // The arc's tangent intersection (the quadratic circle's middle control point); OCCT's
-      // periodic span i is governed by poles i, i+1, i+2: arc i's pole is pole i + 1.
+      // periodic span i is governed by poles i, i+1, i+2: arc i's pole is pole i + 1 (the
+      // clamped one's, after the end pole, too).
       const double alpha = shape.theta[i + 1] - shape.theta[i], mid = shape.theta[i] + alpha / 2;
-      const double rho = rz.x() / std::cos(alpha / 2);
-      const Eigen::Vector3d q = f.origin + rho * (std::cos(mid) * f.x + std::sin(mid) * f.y) + rz.y() * f.z;
-      poles.SetValue((i + 1) % n + 1, j + 1, gp_Pnt(q.x(), q.y(), q.z()));
+      poles.SetValue(closed ? (i + 1) % n + 1 : i + 2, j + 1, at(mid, rz.x() / std::cos(alpha / 2)));
+    }
+    if (!closed) {
+      poles.SetValue(1, j + 1, at(shape.theta[0], rz.x()));
+      poles.SetValue(n + 2, j + 1, at(shape.theta[n], rz.x()));
     }
   }
   TColStd_Array1OfReal uKnots(1, n + 1), vKnots(1, 2);
   TColStd_Array1OfInteger uMults(1, n + 1), vMults(1, 2);
   for (int k = 0; k <= n; ++k) {
     uKnots.SetValue(k + 1, knotsU[k]);
-    uMults.SetValue(k + 1, 1);
+    uMults.SetValue(k + 1, closed || (k > 0 && k < n) ? 1 : 3);
   }
   vKnots.SetValue(1, 0.0);
   vKnots.SetValue(2, 1.0);
   vMults.Init(3);
-  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 2, 2, true, false);
+  return new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 2, 2, closed, false);
 }
 
 BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) ring, const C1BlendOptions& options) {
   shape.frame.check();
   const int n = shape.piecesU(), m = shape.piecesV();
   if (n < 1 || m < 1) throw InputError("the shape has no patches");
-  if (!shape.closedU)
-    throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
   if (!(shape.end.x() > 1e-9 * (std::abs(shape.end.y()) + shape.size))) {
     throw InputError("the interface lies on the axis (a pole): there is no ring to join there");
   }
   if (options.betaT.size() != 0 && options.betaT.size() != n) throw InputError("betaT needs one scalar per arc");
   const Eigen::VectorXd betaT = options.betaT.size() ? options.betaT : shape.beta;
-  const Eigen::VectorXd T = arcKnotsC1(betaT, true);
+  const bool closed = shape.closedU;
+  const Eigen::VectorXd T = arcKnotsC1(betaT, closed);
 
   // Step 1, eq. (12): every quadratic arc around the axis becomes two C1 quartics
-  // q^i∘eta^{i,0}, q^i∘eta^{i,1} (Appendix 7.3), exactly on the circle.
+  // q^i∘eta^{i,0}, q^i∘eta^{i,1} (Appendix 7.3), exactly on the circle (a full turn or part
+  // of one: an open circle's end arcs keep the identity's speed at their free ends).
   const PointMatrix quartics =
-      options.withoutEta ? splitAndRaise(shape.circle) : g1ToC1(shape.circle, shape.beta, betaT, true).bezier;
-  BlendComplex out = c1Complex(T);
+      options.withoutEta ? splitAndRaise(shape.circle) : g1ToC1(shape.circle, shape.beta, betaT, closed).bezier;
+  BlendComplex out = c1Complex(halfArcKnots(T), closed);
 
   // Along the profile: the quadratics as they are, or (quarticInV, circles) eq. (12) too.
   const ProfileRows profile = profileRows(shape, options.quarticInV);
@@ -361,7 +379,7 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   if (ring.IsNull()) {
     r = defaultRingC1(shape, T);
   } else {
-    r = detail::normalisedRing(ring, shape.frame, T[n] - T[0], 2, 2 * M_PI);
+    r = detail::normalisedRing(ring, shape.frame, T[n] - T[0], 2, shape.theta[n] - shape.theta[0]);
     const std::vector<std::vector<double>> cuts = detail::ringCuts(r, out.knotsU);
     if (std::any_of(cuts.begin(), cuts.end(), [](const std::vector<double>& c) { return !c.empty(); })) {
       const detail::SplitPieces split = detail::splitBezierPieces(quartics, 5, out.knotsU, cuts);
@@ -433,14 +451,8 @@ BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bo
   a.frame.check();
   b.frame.check();
   const int n = a.piecesU();
-  if (!a.closedU || !b.closedU) {
-    throw InputError("blending a basic shape needs angles around the axis over a full turn (0 .. 2 pi)");
-  }
-  if (b.piecesU() != n) {
-    std::ostringstream os;
-    os << "the two shapes need the same number of arcs around the axis (" << n << " and " << b.piecesU() << ")";
-    throw InputError(os.str());
-  }
+  if (a.closedU != b.closedU) throw InputError("both shapes need a full turn around the axis, or both a partial one");
+  const bool closed = a.closedU;
   if (!(a.end.x() > 1e-9 * (std::abs(a.end.y()) + a.size))) {
     throw InputError("the first shape's profile meets the axis (a pole) at the join");
   }
@@ -448,14 +460,37 @@ BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bo
   if (!(start(0, 0) / start(0, 2) > 1e-9 * (std::abs(start(0, 1) / start(0, 2)) + b.size))) {
     throw InputError("the second shape's profile meets the axis (a pole) at the join");
   }
-  // Averaged scalars across the transition (Fig. 11): betaT_i = sqrt(beta_i^a beta_i^b); their
-  // product around the turn is 1 as each side's is. Eq. (12) on both circles with these betaT
-  // gives both sides the same knots: two quartics of half the arc's interval each.
-  const Eigen::VectorXd betaT = (a.beta.array() * b.beta.array()).sqrt().matrix();
-  const Eigen::VectorXd T = arcKnotsC1(betaT, true);
-  const PointMatrix quarticsA = g1ToC1(a.circle, a.beta, betaT, true).bezier;
-  const PointMatrix quarticsB = g1ToC1(b.circle, b.beta, betaT, true).bezier;
-  BlendComplex out = c1Complex(T);
+  PointMatrix quarticsA, quarticsB;
+  Eigen::VectorXd knotsU;
+  if (b.piecesU() == n) {
+    // Averaged scalars across the transition (Fig. 11): betaT_i = sqrt(beta_i^a beta_i^b);
+    // their product around the turn is 1 as each side's is. Eq. (12) on both circles with
+    // these betaT gives both sides the same knots: two quartics of half the arc's interval.
+    const Eigen::VectorXd betaT = (a.beta.array() * b.beta.array()).sqrt().matrix();
+    knotsU = halfArcKnots(arcKnotsC1(betaT, closed));
+    quarticsA = g1ToC1(a.circle, a.beta, betaT, closed).bezier;
+    quarticsB = g1ToC1(b.circle, b.beta, betaT, closed).bezier;
+  } else {
+    // Different partitions (the T-joints of Figs. 14, 15e): each circle by eq. (12) with its
+    // own scalars, both knot vectors over one period, and "the transversal 1-jets split to
+    // the finest partition on either side" (Section 5): each side's quartics split at the
+    // other's knots (de Casteljau: the same C1 curve). The basic rows are split with them,
+    // so the shell stays a tensor grid (the paper keeps the coarser side's patches whole).
+    Eigen::VectorXd kA = halfArcKnots(arcKnotsC1(a.beta, closed)), kB = halfArcKnots(arcKnotsC1(b.beta, closed));
+    kA /= kA[kA.size() - 1];
+    kB /= kB[kB.size() - 1];
+    const detail::SplitPieces sA =
+        detail::splitBezierPieces(g1ToC1(a.circle, a.beta, a.beta, closed).bezier, 5, kA, detail::knotCuts(kB, kA));
+    const detail::SplitPieces sB =
+        detail::splitBezierPieces(g1ToC1(b.circle, b.beta, b.beta, closed).bezier, 5, kB, detail::knotCuts(kA, kB));
+    if (sA.knots.size() != sB.knots.size() || !((sA.knots - sB.knots).cwiseAbs().maxCoeff() <= 1e-9)) {
+      throw std::logic_error("joinShapesC1: the merged knots of the two sides differ");
+    }
+    knotsU = sA.knots;
+    quarticsA = sA.bezier;
+    quarticsB = sB.bezier;
+  }
+  BlendComplex out = c1Complex(knotsU, closed);
   const ProfileRows rowsA = profileRows(a, quarticInV), rowsB = profileRows(b, quarticInV);
   out.basicC2InV = rowsA.c1 && rowsB.c1;
   out.rowsBasic = static_cast<int>(rowsA.rows.size());

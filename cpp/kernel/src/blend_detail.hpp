@@ -67,6 +67,10 @@ Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, c
 /// Local cuts (per piece of knotsU) where the ring has u knots inside the pieces.
 std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU);
 
+/// Local cuts (per piece of knotsU, increasing) at the increasing `values` that fall inside
+/// a piece (more than 1e-9 of the span from its ends).
+std::vector<std::vector<double>> knotCuts(const Eigen::VectorXd& values, const Eigen::VectorXd& knotsU);
+
 /// Bézier pieces of `order` rows each over `knots`, split at the local cuts: the pieces,
 /// their knots, and where each old piece starts (first, one more entry).
 struct SplitPieces {

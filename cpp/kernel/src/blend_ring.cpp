@@ -133,12 +133,12 @@ Handle(Geom_BSplineSurface) withKnots(const Handle(Geom_BSplineSurface)& ring, c
   return r;
 }
 
-std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+std::vector<std::vector<double>> knotCuts(const Eigen::VectorXd& values, const Eigen::VectorXd& knotsU) {
   const int P = static_cast<int>(knotsU.size()) - 1;
   const double period = knotsU[P] - knotsU[0];
   std::vector<std::vector<double>> cuts(P);
-  for (int i = 1; i <= ring->NbUKnots(); ++i) {
-    const double u = ring->UKnot(i);
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const double u = values[i];
     for (int k = 0; k < P; ++k) {
       if (u > knotsU[k] + 1e-9 * period && u < knotsU[k + 1] - 1e-9 * period) {
         cuts[k].push_back((u - knotsU[k]) / (knotsU[k + 1] - knotsU[k]));
@@ -146,6 +146,12 @@ std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& rin
     }
   }
   return cuts;
+}
+
+std::vector<std::vector<double>> ringCuts(const Handle(Geom_BSplineSurface)& ring, const Eigen::VectorXd& knotsU) {
+  Eigen::VectorXd knots(ring->NbUKnots());
+  for (int i = 1; i <= ring->NbUKnots(); ++i) knots[i - 1] = ring->UKnot(i);
+  return knotCuts(knots, knotsU);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -73,19 +73,21 @@ struct C1BlendOptions {
 
 /// Arc-level knots of eq. (12) around the axis: T_0 = 0, T_1 = 1, intervals in the ratios
 /// betaT (T_{i+1} - T_i = betaT_i (T_i - T_{i-1})); each arc is two quartics of half its
-/// interval. These are the u knots (one period) a free-form ring must have. Throws
-/// InputError for a partition that is not a full turn, an arc of pi or more, or betaT that
-/// are not positive or do not multiply to 1 around the turn.
+/// interval. These are the u knots (one period, or the span of a partial turn) a free-form
+/// ring must have. Throws InputError for an arc of pi or more, or betaT that are not
+/// positive or (full turn) do not multiply to 1 around the turn.
 Eigen::VectorXd ringKnotsC1(const Eigen::VectorXd& angles, const Eigen::VectorXd& betaT = Eigen::VectorXd());
 
 /// The default biquadratic free-form ring continuing the shape beyond its profile's end:
 /// periodic in u over `knotsU` (one pole per arc, at the arc's tangent intersection, weights
-/// 1), clamped in v with one span of 3 rows along the profile's end tangent, starting half
+/// 1; a partial turn: clamped, with end poles on the circle at its first and last angle),
+/// clamped in v with one span of 3 rows along the profile's end tangent, starting half
 /// the last piece's length beyond the interface, a quarter of it apart. Throws InputError if
 /// the ring would reach the axis or knotsU does not have one value per arc plus one.
 Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Eigen::VectorXd& knotsU);
 
-/// Section 5 for a shape of revolution over a full turn, joined at the end of its profile
+/// Section 5 for a shape of revolution over a full turn or part of one (issue 15), joined at
+/// the end of its profile
 /// to `ring` (null: defaultRingC1 on ringKnotsC1). Steps:
 /// 1. around the axis every quadratic arc becomes the two C1 quartics of eq. (12) (g1ToC1
 ///    with betaT), so the basic patches are (4,2) (or (4,4), quarticInV) and stay exactly
@@ -99,8 +101,8 @@ Handle(Geom_BSplineSurface) defaultRingC1(const G1RevolvedShape& shape, const Ei
 /// Output: patches tagged basic / transition / free-form, knotsU (2 pieces per arc),
 /// knotsV (basic rows, two strip rows of the top basic row's length, ring rows), smoothness
 /// 1, rowsTransition 2. basicC2InV reports whether the basic rows join C1 across v too.
-/// Throws InputError for an open turn, an interface on the axis (a pole), an arc of pi or
-/// more, bad betaT, or a ring that does not match ("the free-form net does not match the
+/// Throws InputError for an interface on the axis (a pole), an arc of pi or more, bad betaT,
+/// or a ring that does not match ("the free-form net does not match the
 /// interface: ...").
 BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) ring = nullptr,
                      const C1BlendOptions& options = C1BlendOptions());
@@ -112,10 +114,14 @@ G1RevolvedShape g1Shape(const ShapeOfRevolution& shape);
 /// Section 5 for basic shape to basic shape (the C1 counterpart of joinShapes): the end of
 /// a's profile joined to the start of b's by a (4,2) double strip; both circles converted by
 /// eq. (12) with the averaged scalars betaT_i = sqrt(beta_i^a beta_i^b), so both sides share
-/// their knots (two quartics an arc). quarticInV: both profiles converted too (C1 across
-/// them, one C1 surface). b's patches are tagged Basic and follow the two strip rows
-/// (rowsFreeForm counts them). Throws InputError for different arc counts, partial turns or
-/// an interface on the axis.
+/// their knots (two quartics an arc). Shapes with different numbers of arcs (the T-joints of
+/// Figs. 14, 15e) keep their own scalars instead: both knot vectors over one period, each
+/// side's quartics split at the other's knots (Section 5: "splitting the transversal
+/// 1-jets to the finest partition on either side"; the basic rows are split with them, so
+/// the complex stays a tensor grid). Full turns or partial ones (both alike). quarticInV:
+/// both profiles converted too (C1 across them, one C1 surface). b's patches are tagged
+/// Basic and follow the two strip rows (rowsFreeForm counts them). Throws InputError for one
+/// full and one partial turn, or an interface on the axis.
 BlendComplex joinShapesC1(const G1RevolvedShape& a, const G1RevolvedShape& b, bool quarticInV = true);
 
 }  // namespace fairsplines
