@@ -113,6 +113,10 @@ class ViewProviderCsrFit(ViewProvider):
     ICON = "FairSplines_CsrFit"
 
 
+class ViewProviderFairFit(ViewProvider):
+    ICON = "FairSplines_FairFit"
+
+
 class ViewProviderFairBlend(ViewProvider):
     ICON = "FairSplines_MonotoneBlend"  # the command kept its name: toolbars people made keep it
 

@@ -188,8 +188,9 @@ struct DataShape {
 /// supports. Runs of 0 longer than 2 kc whose samples lie within tolerance / 2 of one
 /// least-squares line are straight: their estimates are put on that line, so that the
 /// csr-spline reproduces the line there (eq. (6) with a vanishing curvature: mu = 0, c_i = p_i).
+/// A run that reaches an end of open data has its line through that end point (interpolated).
 DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints, double sigma, double tolerance,
-                    Index kc) {
+                    Index kc, bool planarFits) {
   DataShape shape;
   const Index stride = std::max<Index>(1, kc / 4);
   std::vector<Index> at;
@@ -246,15 +247,18 @@ DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints,
     if (atStart && atEnd) {
       c = S.p[0];
       dir = (S.p[S.n - 1] - S.p[0]).normalized();
+    } else if (atStart || atEnd) {
+      // Through the end point and the wide-window estimate at the run's other end, so that
+      // the line meets the estimates beyond the run to a fraction of the noise (a least-
+      // squares line pinned at a noisy end point would be tilted by that point's noise and
+      // leave a kink of the noise's size, hence a false inflection, where the run ends).
+      c = atStart ? S.p[0] : S.p[S.n - 1];
+      const LocalFit far = localFit(S.p, S.n, S.closed, atStart ? last : first, kc, planarFits);
+      dir = ((far.ok ? far.point : S.p[atStart ? last : first]) - c).normalized();
+      if (atEnd) dir = -dir;
     } else {
-      if (atStart) {
-        c = S.p[0];
-      } else if (atEnd) {
-        c = S.p[S.n - 1];
-      } else {
-        for (Index i = first; i <= last; ++i) c += S.p[i];
-        c /= static_cast<double>(last - first + 1);
-      }
+      for (Index i = first; i <= last; ++i) c += S.p[i];
+      c /= static_cast<double>(last - first + 1);
       Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
       for (Index i = first; i <= last; ++i) C.noalias() += (S.p[i] - c) * (S.p[i] - c).transpose();
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
@@ -274,7 +278,7 @@ DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints,
 // The curve's spans as cubic polynomials, and the projection of the samples
 
 struct SpanPolys {
-  std::vector<double> t;                 // knots t_0 .. t_m (one per subset point; + 1 closed)
+  std::vector<double> t;                   // knots t_0 .. t_m (one per subset point; + 1 closed)
   std::vector<std::array<Vector3d, 4>> c;  // C(t_j + x) = c0 + c1 x + c2 x^2 + c3 x^3
   bool closed = false;
   Index spans() const { return static_cast<Index>(c.size()); }
@@ -371,14 +375,22 @@ public:
     const bool planarFits = dim_ == 2;
     sigma_ = o_.noise ? *o_.noise : estimateNoise(S_, planarFits);
     plane_ = dataPlane(S_, static_cast<int>(dim_), std::max(0.5 * tau, 6.0 * sigma_));
-    // Noise-free data (sigma far below the tolerance) are used as they are.
-    smooth_ = sigma_ > 1e-6 * tau;
+    // Samples whose noise is below 1/100 of the tolerance are used as they are (on noise-free
+    // data the "noise" estimated is the local quadratics' model error; smoothing would only
+    // add bias). Straight runs are put on their lines either way.
+    smooth_ = sigma_ > 0.01 * tau;
     // Position window: the centre estimate of a quadratic fit over M samples has a standard
     // deviation of about 1.5 sigma / sqrt(M); M is chosen so that it is at most tolerance / 8.
     const double M = 2.25 * std::pow(8.0 * sigma_ / tau, 2.0);
     kPos_ = std::clamp<Index>(static_cast<Index>(std::ceil((M - 1.0) / 2.0)), 2, 64);
+    // Curvature window: 1/64 of the samples (at least 8, at most 4096 each side).
     kCurv_ = std::clamp<Index>(S_.n / 64, std::max<Index>(8, 2 * kPos_), 4096);
     kCurv_ = std::max<Index>(1, std::min<Index>(kCurv_, (S_.n - 1) / 4));
+    // Where the curvature is near 0 the estimates' noise decides its sign, not the tolerance:
+    // the position window is widened to a quarter of the curvature window (its noise drops
+    // with the square root of its samples; its bias at a curvature jump, quadratic in its
+    // length, is bounded by the tolerance check).
+    kPos_ = std::max<Index>(kPos_, kCurv_ / 4);
 
     FairFitResult result;
     result.noise = sigma_;
@@ -388,7 +400,7 @@ public:
         const Vector3d d = S_.p[i] - plane_.origin;
         planar_[i] = Vector3d(d.dot(plane_.e1), d.dot(plane_.e2), 0.0);
       }
-      shape_ = dataShape(S_, planar_, sigma_, tau, kCurv_);
+      shape_ = dataShape(S_, planar_, sigma_, tau, kCurv_, dim_ == 2);
     }
     result.dataSignChanges = shape_.signChanges;
 
@@ -397,19 +409,32 @@ public:
     Subset sub = initialSubset();
     BSplineCurve curve;
     double maxDev = 0.0;
-    for (;;) {
-      ++result.iterations;
-      curve = build(sub);
-      std::vector<double> dev;
-      maxDev = deviations(curve, sub, dev);
-      if (maxDev <= tau) break;
-      refine(sub, dev);
-    }
-    // Unsupported inflections: try removing a subset point next to each extra sign change
-    // while the tolerance holds (heuristic, bounded).
+    auto fitWithin = [&]() {
+      for (;;) {
+        ++result.iterations;
+        curve = build(sub);
+        std::vector<double> dev;
+        maxDev = deviations(curve, sub, dev);
+        if (maxDev <= tau) break;
+        refine(sub, dev);
+      }
+    };
+    fitWithin();
     Handle(Geom_BSplineCurve) occ = toOcct(curve);
     CurvatureProfile profile = curvatureProfile(occ, 0, 16);
     int changes = curvatureSignChanges(profile);
+    // Unsupported inflections, first remedy: a csr span depends on the 8 subset points
+    // around it (eq. (6): c_i on f_{i-1}, f_i, f_{i+1}), so a straight run with fewer has no
+    // exactly straight span, and the small curvatures leaking in from both of its ends may
+    // cross 0 in the middle. Runs get 8 points (collinear estimates) and the fit is redone.
+    if (changes > shape_.signChanges && densifyStraightRuns(sub)) {
+      fitWithin();
+      occ = toOcct(curve);
+      profile = curvatureProfile(occ, 0, 16);
+      changes = curvatureSignChanges(profile);
+    }
+    // Second remedy: try removing a subset point next to each extra sign change while the
+    // tolerance holds (heuristic, bounded).
     for (int attempt = 0; attempt < 24 && changes > shape_.signChanges;) {
       bool improved = false;
       for (double u : signChangeParameters(profile)) {
@@ -481,16 +506,46 @@ private:
     return sub;
   }
 
+  /// Give every straight run at least 8 subset points (evenly spread over it); whether any
+  /// were added.
+  bool densifyStraightRuns(Subset& sub) const {
+    constexpr Index kPerRun = 8;
+    std::vector<Index> extra;
+    for (const StraightRun& r : shape_.straight) {
+      const Index inside =
+          std::count_if(sub.index.begin(), sub.index.end(), [&](Index i) { return i >= r.first && i <= r.last; });
+      if (inside >= kPerRun || r.last - r.first < 2 * kPerRun) continue;
+      for (Index j = 0; j < kPerRun; ++j) extra.push_back(r.first + (j * (r.last - r.first)) / (kPerRun - 1));
+    }
+    if (extra.empty()) return false;
+    Subset next;
+    std::vector<std::pair<Index, char>> all;
+    for (std::size_t j = 0; j < sub.index.size(); ++j) all.push_back({sub.index[j], sub.raw[j]});
+    for (Index i : extra) all.push_back({i, 0});
+    std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
+      return a.first < b.first || (a.first == b.first && a.second > b.second);
+    });
+    for (const auto& [i, raw] : all) {
+      if (!next.index.empty() && next.index.back() == i) continue;  // keeps the raw flag of the first (raw first)
+      next.index.push_back(i);
+      next.raw.push_back(raw);
+    }
+    if (next.index.size() == sub.index.size()) return false;
+    sub = std::move(next);
+    return true;
+  }
+
   /// The estimate of sample i: itself (raw, or noise-free data), its projection onto the
   /// line of its straight run, or the local quadratic fit over 2 kPos + 1 samples.
   Vector3d estimate(Index i, bool raw) const {
-    if (raw || !smooth_) return S_.p[i];
+    if (raw) return S_.p[i];
     for (const StraightRun& r : shape_.straight) {
       if (i >= r.first && i <= r.last) {
         const Vector3d xp = S_.p[i] - r.c;
         return r.c + xp.dot(r.e) * r.e;
       }
     }
+    if (!smooth_) return S_.p[i];
     const LocalFit f = localFit(S_.p, S_.n, S_.closed, i, kPos_, dim_ == 2);
     return f.ok ? f.point : S_.p[i];
   }
@@ -594,8 +649,8 @@ private:
       if (sub.raw[j] && sub.raw[jn]) {
         std::ostringstream msg;
         msg << "the fair fit cannot keep within the tolerance " << o_.tolerance << " near sample " << a
-            << ": even the csr-spline of the samples themselves is " << dev[j] << " away there (the noise is "
-            << sigma_ << (o_.noise ? ", as given" : ", estimated")
+            << ": even the csr-spline of the samples themselves is " << dev[j] << " away there (the noise is " << sigma_
+            << (o_.noise ? ", as given" : ", estimated")
             << "; a tolerance below about 3 times the noise cannot be met)";
         throw InputError(msg.str());
       }

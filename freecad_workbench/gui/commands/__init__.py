@@ -1,6 +1,6 @@
 """The FairSplines commands, one module per capability, and how the workbench shows them.
 
-    csr.py         Spline through points (csr fit)
+    csr.py         Spline through points (csr fit), Fair fit
     design.py      basic curves, Design spline, Mark points, Edit control points, Profile test
     fair_blend.py  Fair blend, Monotone design
     blend.py       Blend basic shape
@@ -27,7 +27,7 @@ TOOLBAR = (
 
 # (submenu or None, commands); "Separator" draws a line.
 MENU = (
-    (None, [csr.NAME]),
+    (None, [csr.NAME, csr.FAIR_NAME]),
     (QT_TRANSLATE_NOOP("Workbench", "Basic curve"), list(design.KIND_COMMANDS.values())),
     (None, ["FairSplines_DesignSpline", "FairSplines_MarkPoints", "FairSplines_EditPolygon", "Separator",
             fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME, "Separator",

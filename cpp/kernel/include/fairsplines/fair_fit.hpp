@@ -32,12 +32,12 @@ struct FairFitOptions {
 /// What fairFitReport learned, for a feature's status line.
 struct FairFitResult {
   BSplineCurve curve;
-  double maxDeviation = 0.0;   ///< the largest sample-to-curve distance found (an upper bound)
-  int signChanges = 0;         ///< curvature sign changes of the curve (0 when not planar)
-  int dataSignChanges = 0;     ///< sign changes of the data's smoothed curvature above its noise
-  int curvatureExtrema = 0;    ///< interior curvature extrema of the curve
-  double noise = 0.0;          ///< the noise used (given or estimated)
-  int iterations = 0;          ///< refinement passes
+  double maxDeviation = 0.0;  ///< the largest sample-to-curve distance found (an upper bound)
+  int signChanges = 0;        ///< curvature sign changes of the curve (0 when not planar)
+  int dataSignChanges = 0;    ///< sign changes of the data's smoothed curvature above its noise
+  int curvatureExtrema = 0;   ///< interior curvature extrema of the curve
+  double noise = 0.0;         ///< the noise used (given or estimated)
+  int iterations = 0;         ///< refinement passes
 };
 
 /// The fair fit of samples q (n x 2 or n x 3, in order): a clamped (open) or periodic
