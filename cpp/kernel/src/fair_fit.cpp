@@ -264,12 +264,40 @@ DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints,
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
       dir = eig.eigenvectors().col(2);
     }
-    double off = 0.0;
-    for (Index i = first; i <= last; ++i) {
-      const Vector3d d = S.p[i] - c;
-      off = std::max(off, (d - d.dot(dir) * dir).norm());
+    auto offLine = [&](Index from, Index to) {
+      double off = 0.0;
+      for (Index i = from; i <= to; ++i) {
+        const Vector3d d = S.p[i] - c;
+        off = std::max(off, (d - d.dot(dir) * dir).norm());
+      }
+      return off;
+    };
+    if (!(offLine(first, last) <= 0.5 * tolerance)) continue;
+    // The signs' window smears the run's ends by up to kc samples, where the data are
+    // still straight: there the estimates' remaining noise against the line would decide
+    // the curvature's sign at the run's ends. The run is extended by the longest of kc,
+    // kc / 2, kc / 4 samples whose samples stay within tolerance / 2 of its line; where it
+    // reaches into a curved piece, the kink it leaves bends the piece's way.
+    Index from = first, to = last;
+    for (Index ext : {kc, kc / 2, kc / 4}) {
+      if (ext < 1 || atEnd) break;
+      const Index end = std::min<Index>(S.n - 1, last + ext);
+      if (end > last && offLine(last + 1, end) <= 0.5 * tolerance) {
+        to = end;
+        break;
+      }
     }
-    if (off <= 0.5 * tolerance) shape.straight.push_back({first, last, c, dir});
+    for (Index ext : {kc, kc / 2, kc / 4}) {
+      if (ext < 1 || atStart) break;
+      const Index begin = std::max<Index>(0, first - ext);
+      if (begin < first && offLine(begin, first - 1) <= 0.5 * tolerance) {
+        from = begin;
+        break;
+      }
+    }
+    // Runs stay apart (a curved piece between two runs keeps its samples).
+    if (!shape.straight.empty()) from = std::max(from, shape.straight.back().last + 1);
+    shape.straight.push_back({from, to, c, dir});
   }
   return shape;
 }

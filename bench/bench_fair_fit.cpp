@@ -1,0 +1,147 @@
+// Benchmark: the fair fit against the csr-spline and OCCT's GeomAPI_PointsToBSpline (what
+// FreeCAD's approximate calls), plain and with its smoothing weights, on the same noisy
+// samples in the same run, one core.
+//
+// Data: a half circle joined C1 to a flat parabola (convex: 0 curvature sign changes in
+// truth), uniform noise of 1e-4 of its size; tolerance 1e-3 of its size for every method.
+// Columns per method: poles; the largest deviation (GeomAPI_ProjectPointOnCurve from at most
+// 20000 samples evenly spread over all, the same samples for every method); curvature sign
+// changes and curvature extrema (the kernel's OCCT-evaluated profile, 8 samples per span,
+// zero band 1e-6 of the largest curvature); time (best of several runs; one run from 1e5 on).
+// OCCT is skipped where its time, extrapolated from the size before, would exceed 60 s.
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Standard_Failure.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <string>
+
+#include "fairsplines/analysis.hpp"
+#include "fairsplines/csr.hpp"
+#include "fairsplines/fair_fit.hpp"
+#include "fairsplines/occt.hpp"
+#include "bench_timing.hpp"
+
+using namespace fairsplines;
+using fairsplines::bench::bestSeconds;
+
+namespace {
+
+PointMatrix samples(int n, double noise, unsigned seed) {
+  PointMatrix q(n, 3);
+  const int m1 = n / 2;
+  for (int i = 0; i < m1; ++i) {
+    const double th = M_PI + M_PI * i / m1;
+    q.row(i) << std::cos(th), std::sin(th), 0.0;
+  }
+  for (int i = m1; i < n; ++i) {
+    const double y = 1.5 * (i - m1) / double(n - m1 - 1);
+    q.row(i) << 1.0 - 0.1 * y * y, y, 0.0;
+  }
+  const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-noise * size, noise * size);
+  for (int i = 0; i < n; ++i) q(i, 0) += u(rng), q(i, 1) += u(rng);
+  return q;
+}
+
+struct Row {
+  int poles = 0;
+  double deviation = 0, seconds = 0;
+  int signChanges = 0, extrema = 0;
+  std::string note;
+};
+
+Row measure(const Handle(Geom_BSplineCurve)& c, const PointMatrix& q, double seconds) {
+  Row r;
+  r.seconds = seconds;
+  r.poles = c->NbPoles();
+  const int stride = std::max(1, static_cast<int>(q.rows() / 20000));
+  for (int i = 0; i < q.rows(); i += stride) {
+    const gp_Pnt p(q(i, 0), q(i, 1), q(i, 2));
+    GeomAPI_ProjectPointOnCurve proj(p, c);
+    double d = std::min(p.Distance(c->StartPoint()), p.Distance(c->EndPoint()));
+    if (proj.NbPoints() > 0) d = std::min(d, proj.LowerDistance());
+    r.deviation = std::max(r.deviation, d);
+  }
+  const CurvatureProfile profile = curvatureProfile(c, 0, 8);
+  r.signChanges = curvatureSignChanges(profile);
+  r.extrema = static_cast<int>(curvatureExtrema(profile).size());
+  return r;
+}
+
+void print(const char* method, const Row& r) {
+  if (!r.note.empty()) {
+    std::printf("  %-26s %s\n", method, r.note.c_str());
+    return;
+  }
+  std::printf("  %-26s %8d %12.3g %8d %8d %12.2f\n", method, r.poles, r.deviation, r.signChanges, r.extrema,
+              1e3 * r.seconds);
+}
+
+/// An OCCT approximation, unless its time extrapolated from `previous` (seconds at the size
+/// before, times `growth`) exceeds 60 s.
+Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatrix& q, double& previous, double growth,
+         int repeats) {
+  Row r;
+  if (previous < 0 || previous * growth > 60.0) {
+    r.note = "skipped (> 60 s)";
+    previous = -1;
+    return r;
+  }
+  Handle(Geom_BSplineCurve) c;
+  try {
+    const double t = bestSeconds([&] { c = fit(); }, repeats);
+    previous = t;
+    return measure(c, q, t);
+  } catch (const Standard_Failure& e) {
+    r.note = std::string("failed: ") + e.GetMessageString();
+  }
+  return r;
+}
+
+}  // namespace
+
+int main() {
+  std::printf("fair fit vs csr-spline vs GeomAPI_PointsToBSpline (degree 3..8, C2, Tol3D = tolerance), same data\n");
+  std::printf("half circle + flat parabola (convex), uniform noise 1e-4 of the size, tolerance 1e-3 of the size\n");
+  double plainPrev = 0, smoothPrev = 0;
+  for (int n : {1000, 10000, 100000, 1000000}) {
+    const PointMatrix q = samples(n, 1e-4, 7);
+    const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
+    const double tol = 1e-3 * size;
+    const int repeats = n >= 100000 ? 1 : 5;
+    std::printf("N = %d (tolerance %.3g)\n", n, tol);
+    std::printf("  %-26s %8s %12s %8s %8s %12s\n", "method", "poles", "max dev", "sign ch", "extrema", "time [ms]");
+
+    FairFitOptions o;
+    o.tolerance = tol;
+    BSplineCurve fair;
+    const double tFair = bestSeconds([&] { fair = fairFit(q, o); }, repeats);
+    const Row rf = measure(toOcct(fair), q, tFair);
+    print("fair fit", rf);
+
+    BSplineCurve csr;
+    const double tCsr = bestSeconds([&] { csr = csrSpline(q); }, repeats);
+    print("csr-spline (eq. (6))", measure(toOcct(csr), q, tCsr));
+
+    TColgp_Array1OfPnt pts(1, n);
+    for (int i = 0; i < n; ++i) pts.SetValue(i + 1, gp_Pnt(q(i, 0), q(i, 1), q(i, 2)));
+    const double growth = n == 1000 ? 0.0 : 10.0 * 10.0;  // assume quadratic growth for the skip
+    const Row ro = occt([&] { return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, tol).Curve(); }, q, plainPrev,
+                        growth, repeats);
+    print("OCCT PointsToBSpline", ro);
+    const Row rs = occt([&] { return GeomAPI_PointsToBSpline(pts, 1e-3, 1e-3, 1e-3, 8, GeomAbs_C2, tol).Curve(); }, q,
+                        smoothPrev, growth, repeats);
+    print("OCCT smoothing (1e-3 x3)", rs);
+    std::printf("  time ratios: fair fit / csr-spline %.1f", tFair / tCsr);
+    if (ro.note.empty()) std::printf(", OCCT / fair fit %.1f", ro.seconds / tFair);
+    if (rs.note.empty()) std::printf(", OCCT smoothing / fair fit %.1f", rs.seconds / tFair);
+    std::printf("\n");
+  }
+  return 0;
+}
