@@ -74,6 +74,7 @@ bench: build
 	$(BUILD)/bench/bench_blend
 	$(BUILD)/bench/bench_monotone
 	$(BUILD)/bench/bench_fair_blend
+	$(BUILD)/bench/bench_fair_fit
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py

@@ -48,6 +48,7 @@ from .monotone import (  # noqa: E402
     derivative_polygons,
 )
 from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution, monotone_curvature_spline  # noqa: E402
+from .fair_fit import FairFitReport, fair_edge, fair_edge_report, fair_fit, fair_fit_report  # noqa: E402
 
 __all__ = [
     "InputError",
@@ -87,5 +88,10 @@ __all__ = [
     "check_monotone_curvature",
     "curvature_variation",
     "derivative_polygons",
+    "fair_fit",
+    "fair_fit_report",
+    "fair_edge",
+    "fair_edge_report",
+    "FairFitReport",
 ]
 __version__ = "0.1.0"

@@ -175,6 +175,13 @@ def derivative_polygons(cubic: BSplineCurve) -> tuple[FloatArray, FloatArray]: .
 def fair_blend(p0: FloatArray, t0: FloatArray, p1: FloatArray, t1: FloatArray, k0: float = ..., k1: float = ...,
                normal: FloatArray = ...) -> dict[str, object]: ...
 
+# ---- the fair fit
+
+def fair_fit(points: FloatArray, tolerance: float, closed: bool = False, noise: Optional[float] = None,
+             start_tangent: Optional[FloatArray] = None, end_tangent: Optional[FloatArray] = None,
+             start_curvature: Optional[FloatArray] = None,
+             end_curvature: Optional[FloatArray] = None) -> dict[str, object]: ...
+
 # ---- basic shapes and their blends (blending paper, Sections 2-5)
 
 class G2CircleSpline:

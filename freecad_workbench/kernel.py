@@ -87,6 +87,8 @@ curvature_variation = _kernel.curvature_variation
 derivative_polygons = _kernel.derivative_polygons
 # Fair blends (fair_blend.py).
 fair_blend = _kernel.fair_blend
+# The fair fit (fair_fit.py).
+fair_fit = _kernel.fair_fit
 # Basic shapes (shapes.py).
 sphere_zone = _kernel.sphere_zone
 cylinder = _kernel.cylinder

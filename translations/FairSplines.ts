@@ -979,6 +979,34 @@ near it (the four spans it supports).</source>
     </message>
 </context>
 <context>
+    <name>FairSplines_FairFit</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/csr.py"/>
+        <source>A fair C2 spline with few control points within a tolerance (mm) of the selected
+vertices, Points object, sketch points or edges: scan noise is smoothed away and the
+curvature changes sign only where the data does (the csr-spline of chosen points).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/csr.py"/>
+        <source>Fair fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_FitGroup</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/__init__.py"/>
+        <source>Fit points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/__init__.py"/>
+        <source>Spline through points (csr fit), fair fit within a tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>FairSplines_HyperbolaArc</name>
     <message>
         <location filename="../freecad_workbench/gui/commands/design.py"/>

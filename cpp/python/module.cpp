@@ -32,4 +32,5 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindBlendC1(m);
   fairsplines::python::bindMonotone(m);
   fairsplines::python::bindFairBlend(m);
+  fairsplines::python::bindFairFit(m);
 }

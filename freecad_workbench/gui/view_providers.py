@@ -57,7 +57,7 @@ class ViewProvider(StatelessProxy):
         if status.startswith("warning:"):
             warning = icon_path(base + "Warning")
             return warning if os.path.exists(warning) else icon_path(base)
-        if status != "ok":
+        if status != "ok" and not status.startswith("ok:"):  # "ok: 42 poles, ..." (fair fit) is fine
             return icon_path(self.ERROR_ICON or base + "Error")
         return icon_path(base)
 
@@ -111,6 +111,10 @@ StatusIconViewProvider = ViewProvider  # the name documents of csr fits and blen
 
 class ViewProviderCsrFit(ViewProvider):
     ICON = "FairSplines_CsrFit"
+
+
+class ViewProviderFairFit(ViewProvider):
+    ICON = "FairSplines_FairFit"
 
 
 class ViewProviderFairBlend(ViewProvider):

@@ -102,7 +102,8 @@ def test_whats_this_of_the_action_is_the_help_not_the_command_name():
     assert "README" in action.whatsThis() and action.whatsThis() != "FairSplines_CsrFit"
 
 
-@pytest.mark.parametrize("group", ["FairSplines_BasicCurves", "FairSplines_BlendGroup", "FairSplines_AnalysisGroup"])
+@pytest.mark.parametrize("group", ["FairSplines_FitGroup", "FairSplines_BasicCurves", "FairSplines_BlendGroup",
+                                   "FairSplines_AnalysisGroup"])
 def test_groups_default_to_their_first_or_most_used_command(group):
     from freecad_workbench.gui import commands
 

@@ -16,7 +16,10 @@ namespace fairsplines::detail {
 /// ignored and the outer keeps counting.
 class WorkBudget {
 public:
-  WorkBudget(double units, std::string what) : units_(units), what_(std::move(what)) {
+  /// `why` ends the message ("<what> ran out of its work budget (N units): <why>").
+  WorkBudget(double units, std::string what,
+             std::string why = "these ends need curves that turn too fast or too often for a fair blend")
+      : units_(units), what_(std::move(what)), why_(std::move(why)) {
     if (current() == nullptr) current() = this;
   }
   ~WorkBudget() {
@@ -31,7 +34,7 @@ public:
     b->spent_ += units;
     if (!(b->spent_ <= b->units_)) {
       throw InputError(b->what_ + " ran out of its work budget (" + std::to_string(static_cast<long long>(b->units_)) +
-                       " units): these ends need curves that turn too fast or too often for a fair blend");
+                       " units): " + b->why_);
     }
   }
 
@@ -41,7 +44,7 @@ private:
     return budget;
   }
   double units_, spent_ = 0.0;
-  std::string what_;
+  std::string what_, why_;
 };
 
 }  // namespace fairsplines::detail

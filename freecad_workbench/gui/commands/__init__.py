@@ -1,6 +1,6 @@
 """The FairSplines commands, one module per capability, and how the workbench shows them.
 
-    csr.py         Spline through points (csr fit)
+    csr.py         Spline through points (csr fit), Fair fit
     design.py      basic curves, Design spline, Mark points, Edit control points, Profile test
     fair_blend.py  Fair blend, Monotone design
     blend.py       Blend basic shape
@@ -15,9 +15,10 @@ from . import analysis, blend, csr, design, fair_blend
 from .common import QT_TRANSLATE_NOOP, resources
 
 BLEND_GROUP = "FairSplines_BlendGroup"
+FIT_GROUP = "FairSplines_FitGroup"
 
 TOOLBAR = (
-    csr.NAME,
+    FIT_GROUP,
     design.GROUP,
     "FairSplines_DesignSpline",
     "FairSplines_EditPolygon",
@@ -27,12 +28,36 @@ TOOLBAR = (
 
 # (submenu or None, commands); "Separator" draws a line.
 MENU = (
-    (None, [csr.NAME]),
+    (None, [csr.NAME, csr.FAIR_NAME]),
     (QT_TRANSLATE_NOOP("Workbench", "Basic curve"), list(design.KIND_COMMANDS.values())),
     (None, ["FairSplines_DesignSpline", "FairSplines_MarkPoints", "FairSplines_EditPolygon", "Separator",
             fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME, "Separator",
             *analysis.COMMANDS, "FairSplines_ProfileTest"]),
 )
+
+
+class FitGroup:
+    """Drop-down button of the fits of points: Spline through points (csr fit), Fair fit."""
+
+    COMMANDS = (csr.NAME, csr.FAIR_NAME)
+
+    def GetCommands(self):
+        return self.COMMANDS
+
+    def GetDefaultCommand(self):
+        return 0
+
+    def GetResources(self):
+        return resources(
+            FIT_GROUP,
+            QT_TRANSLATE_NOOP(FIT_GROUP, "Fit points"),
+            QT_TRANSLATE_NOOP(FIT_GROUP, "Spline through points (csr fit), fair fit within a tolerance"),
+            "Using it in the FreeCAD GUI",
+            icon=csr.NAME,
+        )
+
+    def IsActive(self):
+        return True
 
 
 class BlendGroup:
@@ -65,6 +90,7 @@ def command_objects():
     for module in (csr, design, fair_blend, blend, analysis):
         commands.update(module.command_objects())
     commands[BLEND_GROUP] = BlendGroup()
+    commands[FIT_GROUP] = FitGroup()
     return commands
 
 

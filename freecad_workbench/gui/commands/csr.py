@@ -1,6 +1,7 @@
 """The csr fit command (GUI only); it records a replayable macro line.
 
 FairSplines_CsrFit   csr fit of the selected vertices, Points, sketch or edges
+FairSplines_FairFit  fair fit (within a tolerance, few poles) of the same sources
 """
 import FreeCADGui
 
@@ -8,6 +9,7 @@ from ...features.csr_fit import usable_source
 from .common import QT_TRANSLATE_NOOP, doc_code, links_code, resources, selected_links
 
 NAME = "FairSplines_CsrFit"
+FAIR_NAME = "FairSplines_FairFit"
 
 
 class CsrFitCommand:
@@ -39,5 +41,35 @@ class CsrFitCommand:
         FreeCADGui.Selection.clearSelection()
 
 
+class FairFitCommand:
+    """Fair fit of the same sources as the csr fit (features/fair_fit.py)."""
+
+    def GetResources(self):
+        return resources(
+            FAIR_NAME,
+            QT_TRANSLATE_NOOP(FAIR_NAME, "Fair fit"),
+            QT_TRANSLATE_NOOP(
+                FAIR_NAME,
+                "A fair C2 spline with few control points within a tolerance (mm) of the selected\n"
+                "vertices, Points object, sketch points or edges: scan noise is smoothed away and the\n"
+                "curvature changes sign only where the data does (the csr-spline of chosen points).",
+            ),
+            "Fair fit",
+        )
+
+    def IsActive(self):
+        links = selected_links()
+        return bool(links) and all(usable_source(obj, sub) for obj, sub in links)
+
+    def Activated(self):
+        links = selected_links()
+        if not links:
+            return
+        FreeCADGui.doCommand("import FreeCAD")
+        FreeCADGui.doCommand("from freecad_workbench.features.fair_fit import make_fair_fit")
+        FreeCADGui.doCommand(f"make_fair_fit({doc_code(links[0][0].Document)}, {links_code(links)})")
+        FreeCADGui.Selection.clearSelection()
+
+
 def command_objects():
-    return {NAME: CsrFitCommand()}
+    return {NAME: CsrFitCommand(), FAIR_NAME: FairFitCommand()}

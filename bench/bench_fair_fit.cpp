@@ -1,0 +1,191 @@
+// Benchmark: the fair fit against the csr-spline and OCCT's GeomAPI_PointsToBSpline (what
+// FreeCAD's approximate calls), plain and with its smoothing weights, on the same noisy
+// samples in the same run, one core.
+//
+// Data: a half circle joined C1 to a flat parabola (convex: 0 curvature sign changes in
+// truth), uniform noise of 1e-4 of its size; tolerance 1e-3 of its size for every method.
+// Columns per method: poles; the largest deviation (GeomAPI_ProjectPointOnCurve from at most
+// 20000 samples evenly spread over all, the same samples for every method; for the
+// csr-spline onto the spans around each sample's own knot); curvature sign
+// changes and curvature extrema (the kernel's OCCT-evaluated profile, 8 samples per span,
+// zero band 1e-6 of the largest curvature); time (best of several runs; one run from 1e5 on).
+// Each OCCT fit runs in a child process, stopped after 60 s of wall time ("skipped (> 60 s)").
+#include <GeomAPI_PointsToBSpline.hxx>
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Standard_Failure.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <random>
+#include <string>
+
+#include "fairsplines/analysis.hpp"
+#include "fairsplines/csr.hpp"
+#include "fairsplines/fair_fit.hpp"
+#include "fairsplines/occt.hpp"
+#include "bench_timing.hpp"
+
+using namespace fairsplines;
+using fairsplines::bench::bestSeconds;
+
+namespace {
+
+PointMatrix samples(int n, double noise, unsigned seed) {
+  PointMatrix q(n, 3);
+  const int m1 = n / 2;
+  for (int i = 0; i < m1; ++i) {
+    const double th = M_PI + M_PI * i / m1;
+    q.row(i) << std::cos(th), std::sin(th), 0.0;
+  }
+  for (int i = m1; i < n; ++i) {
+    const double y = 1.5 * (i - m1) / double(n - m1 - 1);
+    q.row(i) << 1.0 - 0.1 * y * y, y, 0.0;
+  }
+  const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-noise * size, noise * size);
+  for (int i = 0; i < n; ++i) q(i, 0) += u(rng), q(i, 1) += u(rng);
+  return q;
+}
+
+struct Row {
+  int poles = 0;
+  double deviation = 0, seconds = 0;
+  int signChanges = 0, extrema = 0;
+  std::string note;
+};
+
+/// `knotPerSample`: the curve's knot i belongs to sample i (the csr-spline), so each sample
+/// is projected onto the spans around its own knot (a projection onto the whole of a curve of
+/// 10^6 spans costs 10^6 span tests); otherwise onto the whole curve.
+Row measure(const Handle(Geom_BSplineCurve)& c, const PointMatrix& q, double seconds, bool knotPerSample = false) {
+  Row r;
+  r.seconds = seconds;
+  r.poles = c->NbPoles();
+  const int stride = std::max(1, static_cast<int>(q.rows() / 20000));
+  for (int i = 0; i < q.rows(); i += stride) {
+    const gp_Pnt p(q(i, 0), q(i, 1), q(i, 2));
+    GeomAPI_ProjectPointOnCurve proj;
+    if (knotPerSample) {
+      const int k = i + 1;  // OCCT numbers knots from 1
+      proj.Init(p, c, c->Knot(std::max(1, k - 2)), c->Knot(std::min(c->NbKnots(), k + 2)));
+    } else {
+      proj.Init(p, c);
+    }
+    double d = std::min(p.Distance(c->StartPoint()), p.Distance(c->EndPoint()));
+    if (proj.NbPoints() > 0) d = std::min(d, proj.LowerDistance());
+    if (knotPerSample) d = std::min(d, p.Distance(c->Value(c->Knot(std::min(c->NbKnots(), i + 1)))));
+    r.deviation = std::max(r.deviation, d);
+  }
+  const CurvatureProfile profile = curvatureProfile(c, 0, 8);
+  r.signChanges = curvatureSignChanges(profile);
+  r.extrema = static_cast<int>(curvatureExtrema(profile).size());
+  return r;
+}
+
+void print(const char* method, const Row& r) {
+  if (!r.note.empty()) {
+    std::printf("  %-26s %s\n", method, r.note.c_str());
+    return;
+  }
+  std::printf("  %-26s %8d %12.3g %8d %8d %12.2f\n", method, r.poles, r.deviation, r.signChanges, r.extrema,
+              1e3 * r.seconds);
+}
+
+/// An OCCT approximation, run in a child process that is stopped after 60 s ("skipped (> 60 s)"):
+/// the child measures and sends back its Row.
+Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatrix& q, int repeats) {
+  Row r;
+  int fds[2];
+  if (pipe(fds) != 0) {
+    r.note = "failed: no pipe";
+    return r;
+  }
+  const pid_t child = fork();
+  if (child == 0) {
+    close(fds[0]);
+    Row c;
+    try {
+      Handle(Geom_BSplineCurve) curve;
+      const double t = bestSeconds([&] { curve = fit(); }, repeats);
+      c = measure(curve, q, t);
+    } catch (const Standard_Failure& e) {
+      c.poles = -1;
+    }
+    const double out[5] = {double(c.poles), c.deviation, c.seconds, double(c.signChanges), double(c.extrema)};
+    if (write(fds[1], out, sizeof out) != static_cast<ssize_t>(sizeof out)) _exit(1);
+    _exit(0);
+  }
+  close(fds[1]);
+  const auto t0 = fairsplines::bench::Clock::now();
+  int status = 0;
+  bool done = false;
+  while (!done) {
+    done = waitpid(child, &status, WNOHANG) == child;
+    if (done) break;
+    if (std::chrono::duration<double>(fairsplines::bench::Clock::now() - t0).count() > 60.0) {
+      kill(child, SIGKILL);
+      waitpid(child, &status, 0);
+      close(fds[0]);
+      r.note = "skipped (> 60 s)";
+      return r;
+    }
+    usleep(20000);
+  }
+  double in[5];
+  const bool ok = read(fds[0], in, sizeof in) == static_cast<ssize_t>(sizeof in);
+  close(fds[0]);
+  if (!ok || in[0] < 0) {
+    r.note = "failed (OCCT raised)";
+    return r;
+  }
+  r.poles = int(in[0]), r.deviation = in[1], r.seconds = in[2], r.signChanges = int(in[3]), r.extrema = int(in[4]);
+  return r;
+}
+
+}  // namespace
+
+int main() {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line, also into a file
+  std::printf("fair fit vs csr-spline vs GeomAPI_PointsToBSpline (degree 3..8, C2, Tol3D = tolerance), same data\n");
+  std::printf("half circle + flat parabola (convex), uniform noise 1e-4 of the size, tolerance 1e-3 of the size\n");
+  for (int n : {1000, 10000, 100000, 1000000}) {
+    const PointMatrix q = samples(n, 1e-4, 7);
+    const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
+    const double tol = 1e-3 * size;
+    const int repeats = n >= 100000 ? 3 : 10, occtRepeats = n >= 10000 ? 1 : 3;
+    std::printf("N = %d (tolerance %.3g)\n", n, tol);
+    std::printf("  %-26s %8s %12s %8s %8s %12s\n", "method", "poles", "max dev", "sign ch", "extrema", "time [ms]");
+
+    FairFitOptions o;
+    o.tolerance = tol;
+    BSplineCurve fair;
+    const double tFair = bestSeconds([&] { fair = fairFit(q, o); }, repeats);
+    const Row rf = measure(toOcct(fair), q, tFair);
+    print("fair fit", rf);
+
+    BSplineCurve csr;
+    const double tCsr = bestSeconds([&] { csr = csrSpline(q); }, repeats);
+    print("csr-spline (eq. (6))", measure(toOcct(csr), q, tCsr, true));
+
+    TColgp_Array1OfPnt pts(1, n);
+    for (int i = 0; i < n; ++i) pts.SetValue(i + 1, gp_Pnt(q(i, 0), q(i, 1), q(i, 2)));
+    const Row ro = occt([&] { return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, tol).Curve(); }, q, occtRepeats);
+    print("OCCT PointsToBSpline", ro);
+    const Row rs = occt([&] { return GeomAPI_PointsToBSpline(pts, 1e-3, 1e-3, 1e-3, 8, GeomAbs_C2, tol).Curve(); }, q,
+                        occtRepeats);
+    print("OCCT smoothing (1e-3 x3)", rs);
+    std::printf("  time ratios: fair fit / csr-spline %.1f", tFair / tCsr);
+    if (ro.note.empty()) std::printf(", OCCT / fair fit %.1f", ro.seconds / tFair);
+    if (rs.note.empty()) std::printf(", OCCT smoothing / fair fit %.1f", rs.seconds / tFair);
+    std::printf("\n");
+  }
+  return 0;
+}

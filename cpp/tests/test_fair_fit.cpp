@@ -1,0 +1,290 @@
+// Fair fit (fair_fit.hpp), judged by OCCT's evaluation of the returned curve: distances by
+// GeomAPI_ProjectPointOnCurve, curvature and tangents by Geom_BSplineCurve::D2.
+#include <gtest/gtest.h>
+
+#include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "fairsplines/csr.hpp"
+#include "fairsplines/errors.hpp"
+#include "fairsplines/fair_fit.hpp"
+#include "fairsplines/occt.hpp"
+
+using namespace fairsplines;
+
+namespace {
+
+double sizeOf(const PointMatrix& q) { return (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm(); }
+
+void addNoise(PointMatrix& q, double relative, unsigned seed) {
+  std::mt19937 rng(seed);
+  const double a = relative * sizeOf(q);
+  std::uniform_real_distribution<double> u(-a, a);
+  for (Eigen::Index i = 0; i < q.rows(); ++i)
+    for (Eigen::Index c = 0; c < q.cols(); ++c) q(i, c) += u(rng);
+}
+
+/// Half circle of radius 1 (counter-clockwise, lower half) joined C1 at (1, 0) to the flat
+/// parabola x = 1 - 0.1 y^2, y in [0, 1.5]: convex.
+PointMatrix arcParabola(Eigen::Index n) {
+  PointMatrix q(n, 2);
+  const Eigen::Index m1 = n / 2;
+  for (Eigen::Index i = 0; i < m1; ++i) {
+    const double th = M_PI + M_PI * static_cast<double>(i) / static_cast<double>(m1);
+    q.row(i) << std::cos(th), std::sin(th);
+  }
+  for (Eigen::Index i = m1; i < n; ++i) {
+    const double y = 1.5 * static_cast<double>(i - m1) / static_cast<double>(n - m1 - 1);
+    q.row(i) << 1.0 - 0.1 * y * y, y;
+  }
+  return q;
+}
+
+/// Line, arc left 90 deg, line, arc right 90 deg, line (radius 20, lines 30), sampled
+/// uniformly in arc length: one curvature sign change.
+PointMatrix road(Eigen::Index n) {
+  const double R = 20.0, L = 30.0, arc = R * M_PI / 2, total = 3 * L + 2 * arc;
+  PointMatrix q(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double s = total * static_cast<double>(i) / static_cast<double>(n - 1);
+    double x, y;
+    if (s <= L) {
+      x = s, y = 0;
+    } else if ((s -= L) <= arc) {
+      const double a = s / R;
+      x = L + R * std::sin(a), y = R - R * std::cos(a);
+    } else if ((s -= arc) <= L) {
+      x = L + R, y = R + s;
+    } else if ((s -= L) <= arc) {
+      const double a = s / R;  // turning right from heading +y
+      x = L + 2 * R - R * std::cos(a), y = R + L + R * std::sin(a);
+    } else {
+      s -= arc;
+      x = L + 2 * R + s, y = 2 * R + L;
+    }
+    q.row(i) << x, y;
+  }
+  return q;
+}
+
+/// OCCT's signed curvature (about +z) at `perSpan` parameters per knot span.
+std::vector<double> signedCurvature(const Handle(Geom_BSplineCurve)& c, int perSpan = 20) {
+  std::vector<double> k;
+  for (int j = 1; j < c->NbKnots(); ++j) {
+    const double a = c->Knot(j), b = c->Knot(j + 1);
+    for (int s = 0; s < perSpan; ++s) {
+      gp_Pnt p;
+      gp_Vec d1, d2;
+      c->D2(a + (b - a) * s / perSpan, p, d1, d2);
+      k.push_back(d1.Crossed(d2).Z() / std::pow(d1.Magnitude(), 3));
+    }
+  }
+  return k;
+}
+
+int signChanges(const std::vector<double>& k) {
+  double mx = 0;
+  for (double v : k) mx = std::max(mx, std::abs(v));
+  int last = 0, changes = 0;
+  for (double v : k) {
+    if (std::abs(v) <= 1e-6 * mx) continue;
+    const int s = v > 0 ? 1 : -1;
+    if (last != 0 && s != last) ++changes;
+    last = s;
+  }
+  return changes;
+}
+
+/// The largest OCCT distance (GeomAPI_ProjectPointOnCurve) from every `stride`-th sample.
+double maxDistance(const Handle(Geom_BSplineCurve)& c, const PointMatrix& q, Eigen::Index stride = 1) {
+  double worst = 0;
+  for (Eigen::Index i = 0; i < q.rows(); i += stride) {
+    const gp_Pnt p(q(i, 0), q(i, 1), q.cols() > 2 ? q(i, 2) : 0.0);
+    GeomAPI_ProjectPointOnCurve proj(p, c);
+    double d = proj.NbPoints() > 0 ? proj.LowerDistance() : HUGE_VAL;
+    d = std::min({d, p.Distance(c->StartPoint()), p.Distance(c->EndPoint())});
+    worst = std::max(worst, d);
+  }
+  return worst;
+}
+
+std::string refusal(const PointMatrix& q, const FairFitOptions& o) {
+  try {
+    fairFit(q, o);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(FairFit, ConvexNoisyDataHasNoSignChangeAndStaysWithinTolerance) {
+  PointMatrix q = arcParabola(10000);
+  addNoise(q, 1e-4, 1);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  const FairFitResult r = fairFitReport(q, o);
+  const Handle(Geom_BSplineCurve) c = toOcct(r.curve);
+  EXPECT_EQ(c->Degree(), 3);
+  EXPECT_EQ(signChanges(signedCurvature(c)), 0);
+  const double d = maxDistance(c, q);
+  EXPECT_LE(d, o.tolerance);
+  // the reported deviation is an upper bound of the true one, and within the tolerance
+  EXPECT_GE(r.maxDeviation, d * (1 - 1e-9));
+  EXPECT_LE(r.maxDeviation, o.tolerance);
+  EXPECT_LT(c->NbPoles(), 200);
+  EXPECT_EQ(r.dataSignChanges, 0);
+  EXPECT_EQ(r.signChanges, 0);
+}
+
+TEST(FairFit, RoadAlignmentKeepsItsOneSignChange) {
+  PointMatrix q = road(20000);
+  addNoise(q, 1e-4, 2);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  const FairFitResult r = fairFitReport(q, o);
+  const Handle(Geom_BSplineCurve) c = toOcct(r.curve);
+  EXPECT_EQ(r.dataSignChanges, 1);
+  EXPECT_EQ(signChanges(signedCurvature(c)), 1);
+  EXPECT_LE(maxDistance(c, q, 3), o.tolerance);
+  EXPECT_LT(c->NbPoles(), 0.02 * q.rows());
+}
+
+TEST(FairFit, NoiseFreeDataUseNoMorePolesThanTheCsrSplineAndInterpolateTheEnds) {
+  PointMatrix q(300, 2);
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    const double t = M_PI * static_cast<double>(i) / 299.0;
+    q.row(i) << 2 * std::cos(t), std::sin(t);
+  }
+  FairFitOptions o;
+  o.tolerance = 1e-5;
+  const Handle(Geom_BSplineCurve) c = toOcct(fairFit(q, o));
+  EXPECT_LE(maxDistance(c, q), o.tolerance);
+  EXPECT_LE(c->NbPoles(), csrSpline(q).poles.rows());
+  EXPECT_LT(c->NbPoles(), 0.4 * q.rows());
+  EXPECT_LE(c->StartPoint().Distance(gp_Pnt(2, 0, 0)), 1e-14);
+  EXPECT_LE(c->EndPoint().Distance(gp_Pnt(q(299, 0), q(299, 1), 0)), 1e-14);
+}
+
+TEST(FairFit, ClosedDataGiveAPeriodicConvexCurve) {
+  PointMatrix q(4000, 2);
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    const double t = 2 * M_PI * static_cast<double>(i) / 4000.0;
+    q.row(i) << 3 * std::cos(t), std::sin(t);
+  }
+  addNoise(q, 1e-4, 3);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  o.closed = true;
+  const Handle(Geom_BSplineCurve) c = toOcct(fairFit(q, o));
+  EXPECT_TRUE(c->IsPeriodic());
+  EXPECT_EQ(signChanges(signedCurvature(c)), 0);
+  std::vector<double> k = signedCurvature(c);
+  EXPECT_GT(*std::min_element(k.begin(), k.end()), 0.0);  // counter-clockwise: positive throughout
+  EXPECT_LE(maxDistance(c, q, 2), o.tolerance);
+}
+
+TEST(FairFit, HelixIn3DStaysWithinTolerance) {
+  PointMatrix q(5000, 3);
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    const double t = 3 * M_PI * static_cast<double>(i) / 4999.0;
+    q.row(i) << std::cos(t), std::sin(t), 0.1 * t;
+  }
+  addNoise(q, 1e-4, 4);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  const FairFitResult r = fairFitReport(q, o);
+  EXPECT_LE(maxDistance(toOcct(r.curve), q, 2), o.tolerance);
+  EXPECT_EQ(r.curve.dimension(), 3);
+  EXPECT_LT(r.curve.poles.rows(), 150);
+}
+
+TEST(FairFit, EndTangentsAndCurvaturesAreMet) {
+  PointMatrix q = arcParabola(2000);
+  addNoise(q, 1e-4, 5);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  Eigen::VectorXd t0(2), t1(2), k0(2), k1(2);
+  t0 << 0.1, -1.0;
+  t1 << -0.2, 1.0;
+  k0 << 0.9, 0.05;  // its part along t0 is ignored
+  k1 << -0.25, 0.0;
+  o.startTangent = t0, o.endTangent = t1, o.startCurvature = k0, o.endCurvature = k1;
+  const Handle(Geom_BSplineCurve) c = toOcct(fairFit(q, o));
+  EXPECT_LE(maxDistance(c, q, 2), o.tolerance);
+  auto check = [&](double u, Eigen::VectorXd t, const Eigen::VectorXd& k) {
+    gp_Pnt p;
+    gp_Vec d1, d2;
+    c->D2(u, p, d1, d2);
+    t.normalize();
+    const gp_Vec T(t[0], t[1], 0);
+    EXPECT_LE(d1.Normalized().Subtracted(T).Magnitude(), 1e-12);
+    const gp_Vec kv = (d2 - T * d2.Dot(T)) / d1.SquareMagnitude();
+    const gp_Vec want = gp_Vec(k[0], k[1], 0) - T * gp_Vec(k[0], k[1], 0).Dot(T);
+    EXPECT_LE(kv.Subtracted(want).Magnitude(), 1e-9 * want.Magnitude());
+  };
+  check(c->FirstParameter(), t0, k0);
+  check(c->LastParameter(), t1, k1);
+}
+
+TEST(FairFit, BadInputIsRefusedByName) {
+  PointMatrix q = arcParabola(50);
+  FairFitOptions o;
+  o.tolerance = 1e-3;
+  PointMatrix nan = q;
+  nan(7, 1) = std::nan("");
+  EXPECT_NE(refusal(nan, o).find("finite"), std::string::npos);
+  EXPECT_NE(refusal(q.topRows(3), o).find("at least 4"), std::string::npos);
+  PointMatrix twice = q;
+  twice.row(8) = twice.row(7);
+  EXPECT_NE(refusal(twice, o).find("coincide"), std::string::npos);
+  for (double tol : {0.0, -1.0, HUGE_VAL, std::nan("")}) {
+    FairFitOptions bad = o;
+    bad.tolerance = tol;
+    EXPECT_NE(refusal(q, bad).find("tolerance must be positive and finite"), std::string::npos) << tol;
+  }
+  FairFitOptions noisy = o;
+  noisy.noise = -1.0;
+  EXPECT_NE(refusal(q, noisy).find("noise"), std::string::npos);
+  FairFitOptions closed = o;
+  closed.closed = true;
+  closed.endTangent = Eigen::VectorXd::Ones(2);
+  EXPECT_NE(refusal(q, closed).find("open data only"), std::string::npos);
+  FairFitOptions zero = o;
+  zero.startTangent = Eigen::VectorXd::Zero(2);
+  EXPECT_NE(refusal(q, zero).find("zero vector"), std::string::npos);
+  FairFitOptions wrongDim = o;
+  wrongDim.startTangent = Eigen::VectorXd::Ones(3);
+  EXPECT_NE(refusal(q, wrongDim).find("2 coordinates"), std::string::npos);
+  FairFitOptions curvatureOnly = o;
+  curvatureOnly.startCurvature = Eigen::VectorXd::Ones(2);
+  EXPECT_NE(refusal(q, curvatureOnly).find("needs the start tangent"), std::string::npos);
+}
+
+TEST(FairFit, ToleranceBelowTheNoiseIsRefusedNamingTheNoise) {
+  PointMatrix q = arcParabola(3000);
+  addNoise(q, 1e-3, 6);
+  FairFitOptions o;
+  o.tolerance = 1e-5 * sizeOf(q);
+  const std::string why = refusal(q, o);
+  EXPECT_NE(why.find("cannot keep within the tolerance"), std::string::npos) << why;
+  EXPECT_NE(why.find("noise"), std::string::npos) << why;
+}
+
+TEST(FairFit, EstimatesTheNoiseOfGaussianScatter) {
+  PointMatrix q = arcParabola(20000);
+  std::mt19937 rng(8);
+  std::normal_distribution<double> g(0.0, 1e-3);
+  for (Eigen::Index i = 0; i < q.rows(); ++i) q(i, 0) += g(rng), q(i, 1) += g(rng);
+  FairFitOptions o;
+  o.tolerance = 0.01;
+  const FairFitResult r = fairFitReport(q, o);
+  EXPECT_NEAR(r.noise, 1e-3, 0.15e-3);
+  FairFitOptions given = o;
+  given.noise = 2e-3;
+  EXPECT_EQ(fairFitReport(q, given).noise, 2e-3);
+}
