@@ -181,7 +181,7 @@ def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional
     joined as edited (G2 along their profile: .surface is None); else .surface is the one C2
     surface of the whole complex. Rows in v: the start ring, shapes and strips in order, the
     end ring."""
-    shapes = [shapes] if isinstance(shapes, BasicShape) else list(shapes)
+    shapes = list(shapes) if isinstance(shapes, (list, tuple)) else [shapes]
     if not shapes:
         raise InputError("blend_chain needs at least one shape")
     as_choice(method, "method", _METHODS)

@@ -13,6 +13,7 @@ the kernel). docs/FAIR_FIT.md has the method, what is guaranteed and what is heu
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Optional, Tuple
 
@@ -130,24 +131,37 @@ def _end_jet(edge, u):
     d1, d2 = curve.getD2(u)[1:3]
     d1 = np.array([d1.x, d1.y, d1.z])
     d2 = np.array([d2.x, d2.y, d2.z])
-    speed2 = float(d1 @ d1)
-    if not speed2 > 0:
+    # Scaled by the largest component first, so that huge derivatives do not overflow.
+    scale = float(np.max(np.abs(d1)))
+    if not scale > 0:
         raise InputError("the edge's tangent vanishes at an end: its G1/G2 end conditions are undefined")
-    t = d1 / np.sqrt(speed2)
-    k = (d2 - (d2 @ t) * t) / speed2
+    if not math.isfinite(scale):
+        raise InputError("the edge's tangent at an end is not finite")
+    u = d1 / scale
+    n2 = float(u @ u)
+    t = u / math.sqrt(n2)
+    with np.errstate(over="ignore", invalid="ignore"):
+        k = ((d2 - (d2 @ t) * t) / scale) / (n2 * scale)
+    if not np.all(np.isfinite(k)):
+        raise InputError("the edge's curvature at an end is not finite")
     return np.array([p.x, p.y, p.z]), t, k
 
 
 def fair_edge_report(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1",
                      samples: Optional[int] = None) -> Tuple[Part.BSplineCurve, FairFitReport]:
     """fair_edge and its report."""
+    import Part
+
     as_choice(clamp, "clamp", CLAMPS)
     tol = as_real(tolerance, "tolerance", positive=True)
     edge = _bspline_of(edge_or_curve)
     n = samples if samples is not None else int(min(20000, max(1000, 50 * _pole_count(edge))))
     n = kernel.as_count(n, "samples", minimum=8)
     closed = bool(edge.isClosed()) and bool(getattr(edge.Curve, "isPeriodic", lambda: False)())
-    pts = np.array([(v.x, v.y, v.z) for v in edge.discretize(Number=n)], dtype=float)
+    try:
+        pts = np.array([(v.x, v.y, v.z) for v in edge.discretize(Number=n)], dtype=float)
+    except Part.OCCError as exc:
+        raise InputError(f"the edge cannot be sampled ({exc}): is it degenerate or too large?") from None
     if closed:
         return _call(pts[:-1], tol, True, tol / 4.0, None, None)
     u0, u1 = edge.FirstParameter, edge.LastParameter

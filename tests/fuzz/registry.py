@@ -64,6 +64,18 @@ register("quasi_interpolant", [S.points_arg], valid=GOOD_POINTS, kwargs=FIT, exa
 register("control_point_spline", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(closed=S.flag_arg), examples=40)
 register("quadratic_design", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(FIT, epsilon=S.number_arg), examples=40)
 
+# ---- fair fit -----------------------------------------------------------------------------
+TOLERANCE = st.one_of(st.floats(1e-3, 10.0), S.number_arg)
+FAIR = dict(closed=S.flag_arg, noise=st.one_of(st.none(), S.number_arg), start_tangent=st.one_of(st.none(),
+            S.vector_arg), end_tangent=st.one_of(st.none(), S.vector_arg))
+register("fair_fit", [S.points_arg, S.number_arg], valid=[S.good_points, st.floats(1e-2, 10.0)], kwargs=FAIR,
+         examples=40)
+register("fair_fit_report", [S.points_arg, S.number_arg], valid=[S.good_points, st.floats(1e-2, 10.0)],
+         kwargs=FAIR, examples=20)
+CLAMP = S.choice_arg("G0", "G1", "G2")
+register("fair_edge", [S.curve_arg, TOLERANCE], kwargs=dict(clamp=CLAMP, samples=S.count_arg), examples=25)
+register("fair_edge_report", [S.curve_arg, TOLERANCE], kwargs=dict(clamp=CLAMP, samples=S.count_arg), examples=15)
+
 # ---- analysis -----------------------------------------------------------------------------
 register("curvature_profile", [S.curve_arg], dict(n=S.count_arg), examples=30)
 register("curvature_sign_changes", [S.curve_arg], dict(samples_per_span=S.count_arg), examples=30)
@@ -91,6 +103,10 @@ register("blend_naive", [S.shape_arg], valid=[S.shape], kwargs=dict(freeform=S.f
 register("join_basic_shapes", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape],
          kwargs=dict(continuity=CONT, method=METHOD), examples=10)
 register("join_naive", [S.shape_arg, S.shape_arg], valid=[S.shape, S.shape], examples=8)
+CHAIN_END = st.one_of(st.none(), st.just("default"), S.freeform_arg, S.choice_arg("default"))
+register("blend_chain", [st.one_of(S.shape_arg, st.lists(S.shape_arg, max_size=3))],
+         valid=[st.lists(S.shape, min_size=1, max_size=2)], kwargs=dict(start=CHAIN_END, end=CHAIN_END, method=METHOD),
+         examples=12)
 register("freeform_knots", [S.shape_arg], valid=[S.shape], kwargs=dict(method=METHOD, continuity=CONT), examples=20)
 
 # ---- monotone curvature and fair blends ---------------------------------------------------
@@ -166,7 +182,7 @@ register_method("shapes", "pole_at", S.shape, [st.one_of(S.choice_arg("start", "
 # Public names that are not functions to fuzz: exceptions and the result types the API
 # returns (their fields are checked by the contract wherever they come back).
 NOT_CALLABLES = {"InputError", "NoMonotoneSolution", "DesignResult", "ApproximationError", "CurvatureProfile",
-                 "BlendResult", "FairBlendReport", "basic.BasicCurve", "basic", "shapes"}
+                 "BlendResult", "FairBlendReport", "FairFitReport", "basic.BasicCurve", "basic", "shapes"}
 
 
 def public_callables():
