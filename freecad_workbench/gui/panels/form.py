@@ -46,6 +46,9 @@ def form_rows(parent_layout=None, box=None):
     return rows
 
 
+SPIN_MAX_WIDTH = 160  # px: a dimension's spin box at most (its layout then asks no more)
+
+
 def compact(widget, width=SPIN_WIDTH):
     """Let a spin box or combo box shrink to `width` (Qt sizes them for their widest value)."""
     widget.setMinimumWidth(width)
@@ -189,6 +192,9 @@ class LiveEditPanel:
         spin.setDecimals(decimals)
         spin.setSuffix(suffix)
         spin.setKeyboardTracking(False)
+        # Qt sizes a spin box for the text of its range's ends (186 px for "-1000000.0000 mm");
+        # FreeCAD 1.1's task box then asks that of the side panel, wider than its 200 px.
+        spin.setMaximumWidth(SPIN_MAX_WIDTH)
         return compact(spin)
 
     def _apply(self, changes):
