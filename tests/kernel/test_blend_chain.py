@@ -11,32 +11,11 @@ import pytest
 import freecad_workbench as fw
 import Part
 
-NON_UNIFORM = [0.0, 0.4, 1.5, 2.1, 3.9, 4.3, 5.2, 2 * math.pi]
-OTHER = [0.3, 1.1, 1.6, 2.9, 3.4, 4.8, 5.9, 0.3 + 2 * math.pi]  # as many arcs, other angles
-CENTER = np.array([1.0, -2.0, 0.5])
-AXIS = np.array([0.3, -0.2, 1.0]) / np.linalg.norm([0.3, -0.2, 1.0])
-
-
-def samples(surface, n=6):
-    u0, u1, v0, v1 = surface.bounds()
-    for a in np.linspace(u0, u1, n):
-        for b in np.linspace(v0, v1, n):
-            p = surface.value(a, b)
-            yield np.array([p.x, p.y, p.z])
-
-
-def radial(p, center=CENTER):
-    d = p - center
-    z = d @ AXIS
-    return np.linalg.norm(d - z * AXIS), z
+from tests.kernel.test_join import AXIS, CENTER, NON_UNIFORM, OTHER, off_cone, radial, samples
 
 
 def off_sphere(surface, center, radius):
     return max(abs(np.linalg.norm(p - center) - radius) for p in samples(surface))
-
-
-def off_cone(surface, radius0, slope):
-    return max(abs(radial(p)[0] - (radius0 + slope * radial(p)[1])) / math.hypot(1, slope) for p in samples(surface))
 
 
 def grid(result):
