@@ -36,52 +36,38 @@ MENU = (
 )
 
 
-class FitGroup:
-    """Drop-down button of the fits of points: Spline through points (csr fit), Fair fit."""
+class CommandGroup:
+    """A drop-down button of commands (FreeCAD's command group): the first is the default."""
 
-    COMMANDS = (csr.NAME, csr.FAIR_NAME)
+    def __init__(self, name, commands, menu_text, tooltip, help_section, icon):
+        self.name, self.commands = name, tuple(commands)
+        self.menu_text, self.tooltip, self.help_section, self.icon = menu_text, tooltip, help_section, icon
 
     def GetCommands(self):
-        return self.COMMANDS
+        return self.commands
 
     def GetDefaultCommand(self):
         return 0
 
     def GetResources(self):
-        return resources(
-            FIT_GROUP,
-            QT_TRANSLATE_NOOP(FIT_GROUP, "Fit points"),
-            QT_TRANSLATE_NOOP(FIT_GROUP, "Spline through points (csr fit), fair fit within a tolerance"),
-            "Using it in the FreeCAD GUI",
-            icon=csr.NAME,
-        )
+        return resources(self.name, self.menu_text, self.tooltip, self.help_section, icon=self.icon)
 
     def IsActive(self):
         return True
 
 
-class BlendGroup:
-    """Drop-down button of the blends: Fair blend (curves), Monotone design, Blend basic shape."""
-
-    COMMANDS = (fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME)
-
-    def GetCommands(self):
-        return self.COMMANDS
-
-    def GetDefaultCommand(self):
-        return 0
-
-    def GetResources(self):
-        return resources(
-            BLEND_GROUP,
-            QT_TRANSLATE_NOOP(BLEND_GROUP, "Blends"),
-            QT_TRANSLATE_NOOP(BLEND_GROUP, "Fair blend between two curves, monotone design, blend basic shape"),
-            "Fair blends (G1 and G2)",
-            icon=fair_blend.NAME,
-        )
-
-    def IsActive(self):
-        return True
+def _groups():
+    fit = CommandGroup(
+        FIT_GROUP, (csr.NAME, csr.FAIR_NAME),
+        QT_TRANSLATE_NOOP(FIT_GROUP, "Fit points"),
+        QT_TRANSLATE_NOOP(FIT_GROUP, "Spline through points (csr fit), fair fit within a tolerance"),
+        "Using it in the FreeCAD GUI", csr.NAME)
+    blends = CommandGroup(
+        BLEND_GROUP, (fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME),
+        QT_TRANSLATE_NOOP(BLEND_GROUP, "Blends"),
+        QT_TRANSLATE_NOOP(BLEND_GROUP, "Fair blend between two curves, monotone design, blend basic shape"),
+        "Fair blends (G1 and G2)", fair_blend.NAME)
+    return {FIT_GROUP: fit, BLEND_GROUP: blends}
 
 
 def command_objects():
@@ -89,8 +75,7 @@ def command_objects():
     commands = {}
     for module in (csr, design, fair_blend, blend, analysis):
         commands.update(module.command_objects())
-    commands[BLEND_GROUP] = BlendGroup()
-    commands[FIT_GROUP] = FitGroup()
+    commands.update(_groups())
     return commands
 
 

@@ -12,7 +12,29 @@ NAME = "FairSplines_CsrFit"
 FAIR_NAME = "FairSplines_FairFit"
 
 
-class CsrFitCommand:
+class _PointsFit:
+    """A fit of the selected points (vertices, Points objects, sketch points, edges): FEATURE
+    is (features module, its make_ function), called through the console so that macros
+    record it."""
+
+    FEATURE = ("", "")
+
+    def IsActive(self):
+        links = selected_links()
+        return bool(links) and all(usable_source(obj, sub) for obj, sub in links)
+
+    def Activated(self):
+        links = selected_links()
+        if not links:
+            return
+        module, make = self.FEATURE
+        FreeCADGui.doCommand("import FreeCAD")
+        FreeCADGui.doCommand(f"from freecad_workbench.features.{module} import {make}")
+        FreeCADGui.doCommand(f"{make}({doc_code(links[0][0].Document)}, {links_code(links)})")
+        FreeCADGui.Selection.clearSelection()
+
+
+class CsrFitCommand(_PointsFit):
     def GetResources(self):
         return resources(
             NAME,
@@ -27,21 +49,10 @@ class CsrFitCommand:
             accel="F, F",
         )
 
-    def IsActive(self):
-        links = selected_links()
-        return bool(links) and all(usable_source(obj, sub) for obj, sub in links)
-
-    def Activated(self):
-        links = selected_links()
-        if not links:
-            return
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.csr_fit import make_csr_fit")
-        FreeCADGui.doCommand(f"make_csr_fit({doc_code(links[0][0].Document)}, {links_code(links)})")
-        FreeCADGui.Selection.clearSelection()
+    FEATURE = ("csr_fit", "make_csr_fit")
 
 
-class FairFitCommand:
+class FairFitCommand(_PointsFit):
     """Fair fit of the same sources as the csr fit (features/fair_fit.py)."""
 
     def GetResources(self):
@@ -57,18 +68,7 @@ class FairFitCommand:
             "Fair fit",
         )
 
-    def IsActive(self):
-        links = selected_links()
-        return bool(links) and all(usable_source(obj, sub) for obj, sub in links)
-
-    def Activated(self):
-        links = selected_links()
-        if not links:
-            return
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.fair_fit import make_fair_fit")
-        FreeCADGui.doCommand(f"make_fair_fit({doc_code(links[0][0].Document)}, {links_code(links)})")
-        FreeCADGui.Selection.clearSelection()
+    FEATURE = ("fair_fit", "make_fair_fit")
 
 
 def command_objects():
