@@ -1,0 +1,113 @@
+// Internal: the parts of the fair fit (fair_fit.cpp) that read the data (fair_fit_data.cpp:
+// samples, local quadratics, noise, plane, curvature signs and straight runs) and measure
+// the curve against it (fair_fit_distance.cpp: span polynomials, sample projection).
+#pragma once
+#include <Geom_BSplineCurve.hxx>
+#include <array>
+#include <vector>
+
+#include "fairsplines/types.hpp"
+
+namespace fairsplines::detail::fairfit {
+
+using Eigen::Index;
+using Eigen::Vector3d;
+
+// ---------------------------------------------------------------------------------------
+// The samples: rows padded to 3D, their cumulative chord length
+
+struct Samples {
+  std::vector<Vector3d> p;  // q_i, z = 0 for 2D data
+  std::vector<double> s;    // cumulative chord length (n + 1 values when closed)
+  Index n = 0;
+  bool closed = false;
+  double size = 0.0;  // bounding-box diagonal
+  Index wrap(Index i) const { return ((i % n) + n) % n; }
+  // Chord length up to sample index i, where i may run past n - 1 on closed data.
+  double arc(Index i) const { return i < n ? s[i] : s[i - n] + s[n]; }
+};
+
+/// Samples with the checks and chords of validateSamples (which throws InputError).
+Samples readSamples(PointsRef q, bool closed);
+
+// ---------------------------------------------------------------------------------------
+// Local least-squares quadratics: the noise-smoothed estimate, curvature and noise residual
+
+struct LocalFit {
+  Vector3d point;          // the fitted graph above q_i: q_i moved along the normal(s)
+  double kappa = 0.0;      // signed curvature (planar fits), else 0
+  double kappaStd = 0.0;   // its standard deviation for noise sigma = 1
+  double residual2 = 0.0;  // |q_i - point|^2
+  double hat = 0.0;        // the fit's leverage at q_i (its hat-matrix diagonal)
+  bool ok = false;
+};
+
+/// Fit w(u) = a + b u + c u^2 to the 2k + 1 samples around q_i in the frame of the window's
+/// chord (u along it, w the normal offsets; one normal in the plane when `planar`, two in
+/// 3D). The window is shifted inside open data and wraps around closed data.
+LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i, Index k, bool planar);
+
+/// The default noise: the median of the squared centre residuals r_i^2 / (1 - h_i) of
+/// 7-sample local quadratic fits at up to 4096 samples spread over the data, divided by the
+/// median of chi^2 with as many degrees of freedom as normals (0.455 planar, 1.386 in 3D),
+/// so that Gaussian noise of standard deviation sigma per coordinate gives sigma.
+double estimateNoise(const Samples& S, bool planar);
+
+// ---------------------------------------------------------------------------------------
+// The plane of the data (for the signs of curvature)
+
+struct Plane {
+  bool planar = false;
+  Vector3d origin, e1, e2;
+};
+
+/// 2D data: the XY plane. 3D data: the least-squares plane when every sample lies within
+/// `flatness` of it; otherwise not planar (curvature has no sign).
+Plane dataPlane(const Samples& S, int dim, double flatness);
+
+// ---------------------------------------------------------------------------------------
+// The data's curvature signs above the noise, and its straight runs
+
+struct StraightRun {
+  Index first, last;  // sample indices (open runs only: first <= last)
+  Vector3d c, e;      // the least-squares line
+};
+
+struct DataShape {
+  int signChanges = 0;
+  std::vector<StraightRun> straight;
+};
+
+/// Signed curvature of local quadratic fits over 2k + 1 samples at every `stride`-th sample
+/// (k = kc): positive or negative where it exceeds 5 standard deviations of its noise (and
+/// a sagitta of 1e-9 of the size, for noise-free data), else 0. A sign counts only where it
+/// holds for kc samples or more. The sign changes of that sequence are those the data
+/// supports. Runs of 0 longer than 2 kc whose samples lie within tolerance / 2 of one
+/// least-squares line are straight: their estimates are put on that line, so that the
+/// csr-spline reproduces the line there (eq. (6) with a vanishing curvature: mu = 0, c_i = p_i).
+/// A run that reaches an end of open data has its line through that end point (interpolated).
+DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints, double sigma, double tolerance,
+                    Index kc, bool planarFits);
+
+// ---------------------------------------------------------------------------------------
+// The curve's spans as cubic polynomials, and the projection of the samples
+
+struct SpanPolys {
+  std::vector<double> t;                   // knots t_0 .. t_m (one per subset point; + 1 closed)
+  std::vector<std::array<Vector3d, 4>> c;  // C(t_j + x) = c0 + c1 x + c2 x^2 + c3 x^3
+  bool closed = false;
+  Index spans() const { return static_cast<Index>(c.size()); }
+  double h(Index j) const { return t[j + 1] - t[j]; }
+};
+
+/// Every span of `curve` (its OCCT twin `occ`) as its cubic polynomial about its start
+/// knot, from OCCT's right-hand derivatives there.
+SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ);
+
+/// The distance from p to the curve point reached by Newton's method on (C - p) . C' = 0
+/// from parameter x in span j (moving to a neighbouring span when it leaves this one). The
+/// smallest distance met on the way: a curve point that near exists, so it bounds the true
+/// distance from above.
+double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x);
+
+}  // namespace fairsplines::detail::fairfit

@@ -1,0 +1,74 @@
+// Fair fit, measuring the curve against the data (issue 16): every span as its cubic
+// polynomial, and the projection of a sample that bounds its distance from above.
+// docs/FAIR_FIT.md, step 7.
+#include "fair_fit_detail.hpp"
+
+#include <Eigen/Dense>
+#include <Geom_BSplineCurve.hxx>
+#include <algorithm>
+#include <cmath>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+#include <vector>
+
+namespace fairsplines::detail::fairfit {
+
+// ---------------------------------------------------------------------------------------
+// The curve's spans as cubic polynomials, and the projection of the samples
+
+SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ) {
+  SpanPolys P;
+  P.closed = curve.periodic;
+  P.t.assign(curve.knots.data(), curve.knots.data() + curve.knots.size());
+  const Index spans = curve.knots.size() - 1;
+  P.c.resize(spans);
+  for (Index j = 0; j < spans; ++j) {
+    gp_Pnt p;
+    gp_Vec d1, d2, d3;
+    // The right-hand derivatives at t_j, from span j's polynomial (knots numbered from 1).
+    occ->LocalD3(P.t[j], static_cast<int>(j + 1), static_cast<int>(j + 2), p, d1, d2, d3);
+    P.c[j] = {Vector3d(p.X(), p.Y(), p.Z()), Vector3d(d1.X(), d1.Y(), d1.Z()), 0.5 * Vector3d(d2.X(), d2.Y(), d2.Z()),
+              Vector3d(d3.X(), d3.Y(), d3.Z()) / 6.0};
+  }
+  return P;
+}
+
+double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x) {
+  auto eval = [&](Index span, double u, Vector3d& C, Vector3d& C1, Vector3d& C2) {
+    const auto& c = P.c[span];
+    C = ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
+    C1 = (3.0 * c[3] * u + 2.0 * c[2]) * u + c[1];
+    C2 = 6.0 * c[3] * u + 2.0 * c[2];
+  };
+  Vector3d C, C1, C2;
+  eval(j, x, C, C1, C2);
+  double best = (C - p).norm();
+  for (int it = 0; it < 6; ++it) {
+    const Vector3d r = C - p;
+    const double f = r.dot(C1), fp = C1.squaredNorm() + r.dot(C2);
+    if (!(fp > 0.0)) break;
+    const double dx = -f / fp;
+    x += dx;
+    if (x < 0.0) {
+      if (j > 0 || P.closed) {
+        j = j > 0 ? j - 1 : P.spans() - 1;
+        x = std::max(0.0, x + P.h(j));
+      } else {
+        x = 0.0;
+      }
+    } else if (x > P.h(j)) {
+      if (j + 1 < P.spans() || P.closed) {
+        x = std::min(x - P.h(j), 0.0 + P.h(j + 1 < P.spans() ? j + 1 : 0));
+        j = j + 1 < P.spans() ? j + 1 : 0;
+      } else {
+        x = P.h(j);
+      }
+    }
+    eval(j, x, C, C1, C2);
+    best = std::min(best, (C - p).norm());
+    if (std::abs(dx) <= 1e-13 * P.h(j)) break;
+  }
+  return best;
+}
+
+}  // namespace fairsplines::detail::fairfit
