@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <random>
 #include <string>
@@ -152,11 +153,14 @@ Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatri
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  // Optional: the largest N to run (default 10^6), e.g. `bench_fair_fit 10000` for a quick look.
+  const long maxN = argc > 1 ? std::atol(argv[1]) : 1000000;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line, also into a file
   std::printf("fair fit vs csr-spline vs GeomAPI_PointsToBSpline (degree 3..8, C2, Tol3D = tolerance), same data\n");
   std::printf("half circle + flat parabola (convex), uniform noise 1e-4 of the size, tolerance 1e-3 of the size\n");
   for (int n : {1000, 10000, 100000, 1000000}) {
+    if (n > maxN) break;
     const PointMatrix q = samples(n, 1e-4, 7);
     const double size = (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
     const double tol = 1e-3 * size;

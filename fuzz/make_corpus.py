@@ -347,6 +347,48 @@ seed("fuzz_fair_blend", "edge_backwards_chord",  # a slow one: the chord against
 seed("fuzz_fair_blend", "edge_curvature_inf", ends(Enc(), (0, 0), 1.0, 0.5, 0.0, 1.0, k=(INF, 1.0)))
 
 
+# --- fuzz_fair_fit ---------------------------------------------------------------------------
+
+def dense(e, n, radius, turn, noise65535, s_curve=False, dim=2, state=1):
+    """denseCurve: n samples of an arc of `radius` turning by `turn` (an S when s_curve),
+    uniform noise of noise65535 / 65535 * 1e-2, the noise generator's seed `state`."""
+    e.byte(96).u16(n - 4).byte(dim - 2).positive(radius).number(turn).byte(0).byte(0).u16(noise65535)
+    e.flag(s_curve).u16(state - 1)
+    if dim == 3:
+        e.zeros(n)  # z: noise only
+    return e
+
+
+def fit_options(e, closed=False, tol_exp=2, noise=None, tangents=False, fairing=True):
+    """closed, the tolerance size * 10^-(1 + tol_exp) (or any number when tol_exp is a
+    float), the noise as a fraction of the tolerance, unit x end tangents, fairing."""
+    e.byte(0 if closed else 64)
+    if isinstance(tol_exp, float):
+        e.byte(192).number(tol_exp)
+    else:
+        e.byte(0).byte(tol_exp)
+    e.flag(noise is not None)
+    if noise is not None:
+        e.byte(0).unit(noise)
+    for _ in range(2):
+        if tangents:
+            e.choice(0).numbers([1.0, 0.0])
+        else:
+            e.choice(2)
+    return e.byte(64).byte(64).byte(0 if fairing else 224)
+
+
+seed("fuzz_fair_fit", "noisy_half_turn_2000", fit_options(dense(Enc(), 2000, 4.0, math.pi, 65535)))
+seed("fuzz_fair_fit", "noise_free_s_curve_500_unfaired",
+     fit_options(dense(Enc(), 500, 4.0, 2 * math.pi, 0, s_curve=True), tol_exp=3, fairing=False))
+seed("fuzz_fair_fit", "noisy_line_3d_300_given_noise", fit_options(dense(Enc(), 300, 2.0, 0.0, 32768, dim=3),
+                                                                  noise=0.5))
+seed("fuzz_fair_fit", "closed_circle_12", fit_options(points_circle(Enc().byte(0), 12, 1.0, 0.0, 4.0), closed=True))
+seed("fuzz_fair_fit", "open_circle_12_end_tangents",
+     fit_options(points_circle(Enc().byte(0), 12, 1.0, 0.0, 2.0), tol_exp=4, tangents=True))
+seed("fuzz_fair_fit", "edge_tolerance_nan", fit_options(dense(Enc(), 100, 1.0, 1.0, 0), tol_exp=NAN))
+
+
 # --- basic shapes (fuzz_shapes.hpp) ----------------------------------------------------------
 
 def full_turn(e, arcs, steps=None):

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <gp_Pnt.hxx>
 #include <sstream>
 #include <vector>
 
@@ -91,12 +92,13 @@ public:
     Subset sub = initialSubset();
     BSplineCurve curve;
     double maxDev = 0.0;
+    std::vector<Foot> feet;  // of the samples on `curve`, for fairing
     auto fitWithin = [&]() {
       for (;;) {
         ++result.iterations;
         curve = build(sub);
         std::vector<double> dev;
-        maxDev = deviations(curve, sub, dev);
+        maxDev = deviations(curve, sub, dev, &feet);
         if (maxDev <= tau) break;
         refine(sub, dev);
       }
@@ -127,13 +129,15 @@ public:
           fewer.raw.erase(fewer.raw.begin() + j);
           const BSplineCurve candidate = build(fewer);
           std::vector<double> dev;
-          const double d = deviations(candidate, fewer, dev);
+          std::vector<Foot> cFeet;
+          const double d = deviations(candidate, fewer, dev, &cFeet);
           if (!(d <= tau)) continue;
           const Handle(Geom_BSplineCurve) cOcc = toOcct(candidate);
           const CurvatureProfile cProfile = curvatureProfile(cOcc, 0, 16);
           const int cChanges = curvatureSignChanges(cProfile);
           if (cChanges < changes) {
             sub = std::move(fewer), curve = candidate, occ = cOcc, profile = cProfile, changes = cChanges, maxDev = d;
+            feet = std::move(cFeet);
             improved = true;
             break;
           }
@@ -142,11 +146,13 @@ public:
       }
       if (!improved) break;
     }
+    int extrema = static_cast<int>(curvatureExtrema(profile).size());
+    if (o_.fairing) fair(curve, sub, std::move(feet), maxDev, changes, extrema, profile);
     requireValidCurve(curve, "the fair fit of these points");
     result.curve = std::move(curve);
     result.maxDeviation = maxDev;
     result.signChanges = changes;
-    result.curvatureExtrema = static_cast<int>(curvatureExtrema(profile).size());
+    result.curvatureExtrema = extrema;
     return result;
   }
 
@@ -287,29 +293,77 @@ private:
           -1.0);
   }
 
-  /// Every sample's distance to the curve (an upper bound, see projectDistance), by
-  /// interval of the subset; returns the largest. O(n): each sample is projected from its
-  /// chord-length position between the subset samples around it.
-  double deviations(const BSplineCurve& curve, const Subset& sub, std::vector<double>& dev) const {
+  /// The largest distance of the samples of subset interval j (span j of P) to the curve,
+  /// an upper bound (see projectDistance): each sample is projected from its chord-length
+  /// position between the subset samples around it.
+  /// With `feet`: the curve point found for each sample (at sample index - sub.index[0]).
+  double intervalDeviation(const SpanPolys& P, const Subset& sub, Index j, std::vector<Foot>* feet = nullptr) const {
+    const Index m = static_cast<Index>(sub.index.size());
+    const Index a = sub.index[j], b = j + 1 < m ? sub.index[j + 1] : sub.index[0] + S_.n;
+    detail::WorkBudget::spend(static_cast<double>(b - a + 1));
+    const double sa = S_.arc(a), sb = S_.arc(b), h = P.h(j);
+    double d = 0.0;
+    for (Index k = a; k <= b; ++k) {
+      const double x = sb > sa ? (S_.arc(k) - sa) / (sb - sa) * h : 0.0;
+      const Foot foot = projectFoot(P, S_.p[S_.wrap(k)], j, x);
+      d = std::max(d, foot.d);
+      if (feet && foot.d < (*feet)[k - sub.index[0]].d) (*feet)[k - sub.index[0]] = foot;
+    }
+    return std::isfinite(d) ? d : HUGE_VAL;
+  }
+
+  /// Every subset interval's distance to the curve (intervalDeviation); returns the largest.
+  /// O(n). With `feet`: every sample's curve point (fair() starts from them).
+  double deviations(const BSplineCurve& curve, const Subset& sub, std::vector<double>& dev,
+                    std::vector<Foot>* feet = nullptr) const {
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const SpanPolys P = spanPolys(curve, occ);
     const Index m = static_cast<Index>(sub.index.size()), intervals = S_.closed ? m : m - 1;
     dev.assign(intervals, 0.0);
+    if (feet) feet->assign((S_.closed ? S_.n : sub.index.back() - sub.index.front()) + 1, Foot{0, 0.0, HUGE_VAL});
     double worst = 0.0;
     for (Index j = 0; j < intervals; ++j) {
-      const Index a = sub.index[j], b = j + 1 < m ? sub.index[j + 1] : sub.index[0] + S_.n;
-      detail::WorkBudget::spend(static_cast<double>(b - a + 1));
-      const double sa = S_.arc(a), sb = S_.arc(b), h = P.h(j);
-      double d = 0.0;
-      for (Index k = a; k <= b; ++k) {
-        const double x = sb > sa ? (S_.arc(k) - sa) / (sb - sa) * h : 0.0;
-        d = std::max(d, projectDistance(P, S_.p[S_.wrap(k)], j, x));
-      }
-      if (!std::isfinite(d)) d = HUGE_VAL;
-      dev[j] = d;
-      worst = std::max(worst, d);
+      dev[j] = intervalDeviation(P, sub, j, feet);
+      worst = std::max(worst, dev[j]);
     }
     return worst;
+  }
+
+  /// Step 10, fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every
+  /// sample is still within the tolerance (verified over all samples on the faired curve),
+  /// it has no more
+  /// curvature sign changes and fewer curvature extrema (the kernel's OCCT-evaluated
+  /// profile, as before fairing).
+  void fair(BSplineCurve& curve, const Subset& sub, std::vector<Foot> feet, double& maxDev, int& changes, int& extrema,
+            CurvatureProfile& profile) const {
+    const Handle(Geom_BSplineCurve) occ = toOcct(curve);
+    SpanPolys P = spanPolys(curve, occ);
+    Fairing f;
+    f.tolerance = o_.tolerance;
+    f.samples = &S_;
+    f.at = sub.index;
+    if (S_.closed) f.at.push_back(sub.index.front() + S_.n);
+    f.feet = std::move(feet);
+    f.fixedStart = startK_ ? 3 : 2;
+    f.fixedEnd = endK_ ? 3 : 2;
+    if (plane_.planar) f.normal = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
+    f.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
+    f.maxMoves = 4 * P.spans();
+    if (fairThirdDerivativeJumps(occ, P, f) == 0) return;
+    BSplineCurve faired = curve;
+    for (Index i = 0; i < faired.poles.rows(); ++i) {
+      const gp_Pnt x = occ->Pole(static_cast<int>(i) + 1);
+      const Vector3d v(x.X(), x.Y(), x.Z());
+      faired.poles.row(i) = v.head(dim_).transpose();
+    }
+    if (!faired.poles.allFinite()) return;
+    const double d = f.maxDeviation;
+    if (!(d <= o_.tolerance)) return;
+    CurvatureProfile fProfile = curvatureProfile(toOcct(faired), 0, 16);
+    const int fChanges = curvatureSignChanges(fProfile);
+    const int fExtrema = static_cast<int>(curvatureExtrema(fProfile).size());
+    if (fChanges > changes || fExtrema >= extrema) return;
+    curve = std::move(faired), maxDev = d, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
   }
 
   /// Intervals beyond the tolerance get their middle sample; intervals of neighbouring

@@ -4,6 +4,9 @@
 #pragma once
 #include <Geom_BSplineCurve.hxx>
 #include <array>
+#include <cmath>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "fairsplines/types.hpp"
@@ -100,6 +103,9 @@ struct SpanPolys {
   double h(Index j) const { return t[j + 1] - t[j]; }
 };
 
+/// Span j of `occ` (knots t, as SpanPolys::t) as its cubic polynomial about t_j.
+std::array<Vector3d, 4> spanPoly(const Handle(Geom_BSplineCurve)& occ, const std::vector<double>& t, Index j);
+
 /// Every span of `curve` (its OCCT twin `occ`) as its cubic polynomial about its start
 /// knot, from OCCT's right-hand derivatives there.
 SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ);
@@ -109,5 +115,47 @@ SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& 
 /// smallest distance met on the way: a curve point that near exists, so it bounds the true
 /// distance from above.
 double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x);
+
+/// A curve point near a sample: span, parameter in it (from the span's start) and distance.
+struct Foot {
+  Index span = 0;
+  double x = 0.0, d = 0.0;
+};
+
+/// projectDistance with the curve point it found.
+Foot projectFoot(const SpanPolys& P, const Vector3d& p, Index j, double x);
+
+// ---------------------------------------------------------------------------------------
+// Fairing: removing the third-derivative jumps at the knots (fair_fit_fairing.cpp)
+
+/// What fairing may change and must keep.
+struct Fairing {
+  double tolerance = 0.0;
+  /// The samples, and the sample index at each knot (the subset: m + 1 values, the last past
+  /// n - 1 when closed): span j's samples are at[j] .. at[j + 1].
+  const Samples* samples = nullptr;
+  std::vector<Index> at;
+  /// Each sample's curve point (at sample index - at[0]), from the last distance check;
+  /// empty: projected here.
+  std::vector<Foot> feet;
+  /// Open curves: poles 0 .. fixedStart - 1 and the last fixedEnd poles are not moved
+  /// (2: end point and tangent leg; 3 with an end curvature).
+  Index fixedStart = 2, fixedEnd = 2;
+  /// Planar curves: the plane's normal, for the signs of curvature (kept from increasing).
+  std::optional<Vector3d> normal;
+  /// Curvatures of at most this size have no sign.
+  double zeroKappa = 0.0;
+  /// At most this many pole moves.
+  Index maxMoves = 0;
+  /// Out, when a move was made: the largest distance of the samples to the faired curve (an
+  /// upper bound, verified over every sample on the final curve).
+  double maxDeviation = HUGE_VAL;
+};
+
+/// Fair `occ` and its span polynomials P in place: knot by knot, largest jump first, the
+/// pole centred on a knot is moved to make the curve C3 there (or half or a quarter of the
+/// way), when every sample of the spans it changes stays within the tolerance and their
+/// curvature sign changes do not increase. Returns the moves made.
+Index fairThirdDerivativeJumps(const Handle(Geom_BSplineCurve)& occ, SpanPolys& P, Fairing& f);
 
 }  // namespace fairsplines::detail::fairfit

@@ -16,24 +16,26 @@ namespace fairsplines::detail::fairfit {
 // ---------------------------------------------------------------------------------------
 // The curve's spans as cubic polynomials, and the projection of the samples
 
+std::array<Vector3d, 4> spanPoly(const Handle(Geom_BSplineCurve)& occ, const std::vector<double>& t, Index j) {
+  gp_Pnt p;
+  gp_Vec d1, d2, d3;
+  // The right-hand derivatives at t_j, from span j's polynomial (knots numbered from 1).
+  occ->LocalD3(t[j], static_cast<int>(j + 1), static_cast<int>(j + 2), p, d1, d2, d3);
+  return {Vector3d(p.X(), p.Y(), p.Z()), Vector3d(d1.X(), d1.Y(), d1.Z()), 0.5 * Vector3d(d2.X(), d2.Y(), d2.Z()),
+          Vector3d(d3.X(), d3.Y(), d3.Z()) / 6.0};
+}
+
 SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ) {
   SpanPolys P;
   P.closed = curve.periodic;
   P.t.assign(curve.knots.data(), curve.knots.data() + curve.knots.size());
   const Index spans = curve.knots.size() - 1;
   P.c.resize(spans);
-  for (Index j = 0; j < spans; ++j) {
-    gp_Pnt p;
-    gp_Vec d1, d2, d3;
-    // The right-hand derivatives at t_j, from span j's polynomial (knots numbered from 1).
-    occ->LocalD3(P.t[j], static_cast<int>(j + 1), static_cast<int>(j + 2), p, d1, d2, d3);
-    P.c[j] = {Vector3d(p.X(), p.Y(), p.Z()), Vector3d(d1.X(), d1.Y(), d1.Z()), 0.5 * Vector3d(d2.X(), d2.Y(), d2.Z()),
-              Vector3d(d3.X(), d3.Y(), d3.Z()) / 6.0};
-  }
+  for (Index j = 0; j < spans; ++j) P.c[j] = spanPoly(occ, P.t, j);
   return P;
 }
 
-double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x) {
+Foot projectFoot(const SpanPolys& P, const Vector3d& p, Index j, double x) {
   auto eval = [&](Index span, double u, Vector3d& C, Vector3d& C1, Vector3d& C2) {
     const auto& c = P.c[span];
     C = ((c[3] * u + c[2]) * u + c[1]) * u + c[0];
@@ -42,7 +44,7 @@ double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x)
   };
   Vector3d C, C1, C2;
   eval(j, x, C, C1, C2);
-  double best = (C - p).norm();
+  Foot best{j, x, (C - p).norm()};
   for (int it = 0; it < 6; ++it) {
     const Vector3d r = C - p;
     const double f = r.dot(C1), fp = C1.squaredNorm() + r.dot(C2);
@@ -65,10 +67,12 @@ double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x)
       }
     }
     eval(j, x, C, C1, C2);
-    best = std::min(best, (C - p).norm());
+    if (const double d = (C - p).norm(); d < best.d) best = {j, x, d};
     if (std::abs(dx) <= 1e-13 * P.h(j)) break;
   }
   return best;
 }
+
+double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x) { return projectFoot(P, p, j, x).d; }
 
 }  // namespace fairsplines::detail::fairfit

@@ -27,6 +27,10 @@ struct FairFitOptions {
   /// (kappa times the unit principal normal; its part along the tangent is ignored).
   /// The zero vector asks for zero curvature.
   std::optional<Eigen::VectorXd> startCurvature, endCurvature;
+  /// Fair the fit once it is within the tolerance: remove the third-derivative jumps at the
+  /// knots where the tolerance allows (fewer curvature extrema; docs/FAIR_FIT.md, step 10).
+  /// false gives the csr-spline of the subset as it is.
+  bool fairing = true;
 };
 
 /// What fairFitReport learned, for a feature's status line.
