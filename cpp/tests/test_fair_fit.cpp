@@ -2,8 +2,10 @@
 // GeomAPI_ProjectPointOnCurve, curvature and tangents by Geom_BSplineCurve::D2.
 #include <gtest/gtest.h>
 
+#include <GeomAPI_PointsToBSpline.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -322,10 +324,11 @@ TEST(FairFit, EstimatesTheNoiseOfGaussianScatter) {
   EXPECT_EQ(fairFitReport(q, given).noise, 2e-3);
 }
 
-// Step 10 (docs/FAIR_FIT.md): fairing removes third-derivative jumps at the knots within the
-// tolerance. Judged by OCCT: fewer curvature extrema than the same fit unfaired, every sample
-// still within the tolerance, the same sign changes, still C2, the end points kept.
-TEST(FairFit, FairingRemovesCurvatureExtremaWithinTheTolerance) {
+// Step 10 (docs/FAIR_FIT.md): thinning removes knots and fairing third-derivative jumps at the
+// knots, within the tolerance. Judged by OCCT: fewer poles and fewer curvature extrema than
+// the same fit without step 10, every sample still within the tolerance, the same sign
+// changes, still C2, the end points kept.
+TEST(FairFit, ThinningAndFairingRemovePolesAndCurvatureExtremaWithinTheTolerance) {
   struct Case {
     const char* name;
     PointMatrix q;
@@ -355,9 +358,46 @@ TEST(FairFit, FairingRemovesCurvatureExtremaWithinTheTolerance) {
     EXPECT_EQ(signChanges(signedCurvature(after)), c.signChanges);
     EXPECT_LE(maxDistance(after, c.q, 2), o.tolerance);
     EXPECT_LE(c2Jump(after), 1e-6);
-    EXPECT_LE(after->NbPoles(), before->NbPoles());
+    EXPECT_LT(after->NbPoles(), before->NbPoles());
     const Eigen::Index last = c.q.rows() - 1;
     EXPECT_LE(after->StartPoint().Distance(gp_Pnt(c.q(0, 0), c.q(0, 1), 0)), 1e-12 * sizeOf(c.q));
     EXPECT_LE(after->EndPoint().Distance(gp_Pnt(c.q(last, 0), c.q(last, 1), 0)), 1e-12 * sizeOf(c.q));
   }
+}
+
+TEST(FairFit, ThinningKeepsClosedDataPeriodicAndWithinTheTolerance) {
+  PointMatrix q(4000, 2);
+  for (Eigen::Index i = 0; i < q.rows(); ++i) {
+    const double t = 2 * M_PI * static_cast<double>(i) / 4000.0;
+    q.row(i) << 3 * std::cos(t), std::sin(t);
+  }
+  addNoise(q, 1e-4, 13);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  o.closed = true;
+  FairFitOptions plain = o;
+  plain.fairing = false;
+  const Handle(Geom_BSplineCurve) before = toOcct(fairFit(q, plain)), after = toOcct(fairFit(q, o));
+  EXPECT_TRUE(after->IsPeriodic());
+  EXPECT_LT(after->NbPoles(), before->NbPoles());
+  EXPECT_EQ(signChanges(signedCurvature(after)), 0);
+  EXPECT_LE(maxDistance(after, q, 2), o.tolerance);
+  EXPECT_LE(c2Jump(after), 1e-6);
+}
+
+// The competitor at the same tolerance: OCCT's GeomAPI_PointsToBSpline (FreeCAD's
+// approximate; degree 3..8, C2). On 1000 noisy samples of the bench's convex data it needs 9
+// poles; the fair fit without step 10 had 18, with it 11 (docs/FAIR_FIT.md).
+TEST(FairFit, UsesAboutAsFewPolesAsOcctsApproximation) {
+  PointMatrix q = arcParabola(1000);
+  addNoise(q, 1e-4, 7);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  const Handle(Geom_BSplineCurve) fit = toOcct(fairFit(q, o));
+  TColgp_Array1OfPnt pts(1, static_cast<int>(q.rows()));
+  for (Eigen::Index i = 0; i < q.rows(); ++i) pts.SetValue(static_cast<int>(i) + 1, gp_Pnt(q(i, 0), q(i, 1), 0));
+  const Handle(Geom_BSplineCurve) occt = GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, o.tolerance).Curve();
+  EXPECT_LE(maxDistance(fit, q), o.tolerance);
+  EXPECT_LE(fit->NbPoles(), 1.3 * occt->NbPoles()) << fit->NbPoles() << " vs OCCT's " << occt->NbPoles();
+  EXPECT_EQ(signChanges(signedCurvature(fit)), 0);
 }

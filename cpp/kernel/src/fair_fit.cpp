@@ -147,7 +147,7 @@ public:
       if (!improved) break;
     }
     int extrema = static_cast<int>(curvatureExtrema(profile).size());
-    if (o_.fairing) fair(curve, sub, std::move(feet), maxDev, changes, extrema, profile);
+    if (o_.fairing) polish(curve, sub, std::move(feet), maxDev, changes, extrema, profile);
     requireValidCurve(curve, "the fair fit of these points");
     result.curve = std::move(curve);
     result.maxDeviation = maxDev;
@@ -329,25 +329,61 @@ private:
     return worst;
   }
 
-  /// Step 10, fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every
-  /// sample is still within the tolerance (verified over all samples on the faired curve),
-  /// it has no more
-  /// curvature sign changes and fewer curvature extrema (the kernel's OCCT-evaluated
-  /// profile, as before fairing).
-  void fair(BSplineCurve& curve, const Subset& sub, std::vector<Foot> feet, double& maxDev, int& changes, int& extrema,
-            CurvatureProfile& profile) const {
+  /// Step 10 (docs/FAIR_FIT.md): thinning (fair_fit_thinning.cpp), then fairing
+  /// (fair_fit_fairing.cpp), each verified over all samples on its final curve. The thinned
+  /// curve replaces the fit when it has no more curvature sign changes (the kernel's
+  /// OCCT-evaluated profile, as before); the faired one when it has no more sign changes and
+  /// fewer curvature extrema.
+  void polish(BSplineCurve& curve, const Subset& sub, std::vector<Foot> feet, double& maxDev, int& changes,
+              int& extrema, CurvatureProfile& profile) const {
+    std::vector<Index> at = sub.index;
+    if (S_.closed) at.push_back(sub.index.front() + S_.n);
+    const Index fixedStart = startK_ ? 3 : 2, fixedEnd = endK_ ? 3 : 2;
+    std::optional<Vector3d> normal;
+    if (plane_.planar) normal = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
+    const double zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
+
+    Thinning th;
+    th.tolerance = o_.tolerance;
+    th.samples = &S_;
+    th.at = at;
+    th.feet = feet;
+    th.fixedStart = fixedStart, th.fixedEnd = fixedEnd;
+    th.normal = normal;
+    th.zeroKappa = zeroKappa;
+    const Handle(Geom_BSplineCurve) occ = toOcct(curve);
+    const Handle(Geom_BSplineCurve) thinned = removeKnots(occ, th);
+    if (thinned != occ && th.maxDeviation <= o_.tolerance) {
+      BSplineCurve c = fromOcct(thinned);
+      c.poles = c.poles.leftCols(dim_).eval();
+      CurvatureProfile tProfile = curvatureProfile(thinned, 0, 16);
+      const int tChanges = curvatureSignChanges(tProfile);
+      if (c.poles.allFinite() && tChanges <= changes) {
+        curve = std::move(c), maxDev = th.maxDeviation, changes = tChanges, profile = std::move(tProfile);
+        extrema = static_cast<int>(curvatureExtrema(profile).size());
+        at = std::move(th.at), feet = std::move(th.feet);
+      }
+    }
+    fair(curve, at, std::move(feet), maxDev, changes, extrema, profile, fixedStart, fixedEnd, normal, zeroKappa);
+  }
+
+  /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is
+  /// still within the tolerance (verified over all samples on the faired curve), it has no
+  /// more curvature sign changes and fewer curvature extrema.
+  void fair(BSplineCurve& curve, std::vector<Index> at, std::vector<Foot> feet, double& maxDev, int& changes,
+            int& extrema, CurvatureProfile& profile, Index fixedStart, Index fixedEnd,
+            const std::optional<Vector3d>& normal, double zeroKappa) const {
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     SpanPolys P = spanPolys(curve, occ);
     Fairing f;
     f.tolerance = o_.tolerance;
     f.samples = &S_;
-    f.at = sub.index;
-    if (S_.closed) f.at.push_back(sub.index.front() + S_.n);
+    f.at = std::move(at);
     f.feet = std::move(feet);
-    f.fixedStart = startK_ ? 3 : 2;
-    f.fixedEnd = endK_ ? 3 : 2;
-    if (plane_.planar) f.normal = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
-    f.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
+    f.fixedStart = fixedStart;
+    f.fixedEnd = fixedEnd;
+    f.normal = normal;
+    f.zeroKappa = zeroKappa;
     f.maxMoves = 4 * P.spans();
     if (fairThirdDerivativeJumps(occ, P, f) == 0) return;
     BSplineCurve faired = curve;

@@ -125,6 +125,10 @@ struct Foot {
 /// projectDistance with the curve point it found.
 Foot projectFoot(const SpanPolys& P, const Vector3d& p, Index j, double x);
 
+/// Sign changes of the curvature about `normal` over the given spans of P in that order (16
+/// samples a span; curvatures of at most zeroKappa have no sign).
+int signChangesOver(const SpanPolys& P, const std::vector<Index>& spans, const Vector3d& normal, double zeroKappa);
+
 // ---------------------------------------------------------------------------------------
 // Fairing: removing the third-derivative jumps at the knots (fair_fit_fairing.cpp)
 
@@ -157,5 +161,33 @@ struct Fairing {
 /// way), when every sample of the spans it changes stays within the tolerance and their
 /// curvature sign changes do not increase. Returns the moves made.
 Index fairThirdDerivativeJumps(const Handle(Geom_BSplineCurve)& occ, SpanPolys& P, Fairing& f);
+
+// ---------------------------------------------------------------------------------------
+// Thinning: removing knots where the tolerance allows (fair_fit_thinning.cpp)
+
+/// What thinning may change and must keep (as Fairing).
+struct Thinning {
+  double tolerance = 0.0;
+  const Samples* samples = nullptr;
+  /// The sample index at each knot (as Fairing::at); out: those of the thinned curve.
+  std::vector<Index> at;
+  /// Each sample's curve point (as Fairing::feet, required); out: on the thinned curve.
+  std::vector<Foot> feet;
+  /// Open curves: the poles at either end that do not move (as Fairing).
+  Index fixedStart = 2, fixedEnd = 2;
+  std::optional<Vector3d> normal;
+  double zeroKappa = 0.0;
+  /// Out, when a knot was removed: the largest distance of the samples to the thinned curve
+  /// (an upper bound, verified over every sample on the final curve).
+  double maxDeviation = HUGE_VAL;
+};
+
+/// Remove interior knots of `occ` (a cubic with simple knots) one at a time, in order of
+/// their estimated removal error, by OCCT's knot removal, when every sample near the changed
+/// spans stays within the tolerance and their curvature sign changes do not increase; up to
+/// three passes, within a work budget of about 20 sample evaluations per sample. Returns the
+/// thinned curve (a new one), or `occ` itself when no knot was removed or the final check
+/// over all samples failed (then `t` is as given).
+Handle(Geom_BSplineCurve) removeKnots(const Handle(Geom_BSplineCurve)& occ, Thinning& t);
 
 }  // namespace fairsplines::detail::fairfit

@@ -75,4 +75,24 @@ Foot projectFoot(const SpanPolys& P, const Vector3d& p, Index j, double x) {
 
 double projectDistance(const SpanPolys& P, const Vector3d& p, Index j, double x) { return projectFoot(P, p, j, x).d; }
 
+int signChangesOver(const SpanPolys& P, const std::vector<Index>& spans, const Vector3d& normal, double zeroKappa) {
+  int changes = 0, last = 0;
+  for (Index j : spans) {
+    const auto& c = P.c[j];
+    const double h = P.h(j);
+    for (int s = 0; s < 16; ++s) {
+      const double u = h * s / 16.0;
+      const Vector3d C1 = (3.0 * c[3] * u + 2.0 * c[2]) * u + c[1], C2 = 6.0 * c[3] * u + 2.0 * c[2];
+      const double speed = C1.norm();
+      if (!(speed > 0.0)) continue;
+      const double kappa = C1.cross(C2).dot(normal) / (speed * speed * speed);
+      if (!(std::abs(kappa) > zeroKappa)) continue;
+      const int sign = kappa > 0.0 ? 1 : -1;
+      if (last != 0 && sign != last) ++changes;
+      last = sign;
+    }
+  }
+  return changes;
+}
+
 }  // namespace fairsplines::detail::fairfit

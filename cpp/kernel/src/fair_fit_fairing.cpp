@@ -195,25 +195,10 @@ private:
   /// Curvature sign changes over spans k-3 .. k+2 (16 samples a span), planar curves only.
   int signChanges(Index k) const {
     if (!f_.normal) return 0;
-    int changes = 0, last = 0;
-    for (Index d = -3; d <= 2; ++d) {
-      const Index j = knot(k + d);
-      if (j < 0) continue;
-      const auto& c = P_.c[j];
-      const double h = P_.h(j);
-      for (int s = 0; s < 16; ++s) {
-        const double u = h * s / 16.0;
-        const Vector3d C1 = (3.0 * c[3] * u + 2.0 * c[2]) * u + c[1], C2 = 6.0 * c[3] * u + 2.0 * c[2];
-        const double speed = C1.norm();
-        if (!(speed > 0.0)) continue;
-        const double kappa = C1.cross(C2).dot(*f_.normal) / (speed * speed * speed);
-        if (!(std::abs(kappa) > f_.zeroKappa)) continue;
-        const int sign = kappa > 0.0 ? 1 : -1;
-        if (last != 0 && sign != last) ++changes;
-        last = sign;
-      }
-    }
-    return changes;
+    std::vector<Index> spans;
+    for (Index d = -3; d <= 2; ++d)
+      if (knot(k + d) >= 0) spans.push_back(knot(k + d));
+    return signChangesOver(P_, spans, *f_.normal, f_.zeroKappa);
   }
 
   /// Zero the jump at knot k by moving its centre pole (or move it half or a quarter of the
@@ -248,8 +233,16 @@ private:
       // (Samples of the changed spans; one whose curve point is in a changed span but whose
       // own span is not is caught by verify(), which evaluates every sample at the end.)
       bool ok = signChanges(k) <= before;
+      // The curve moves by at most |d| (the B-splines are a partition of unity), so a sample
+      // within tolerance - |d| of its curve point stays within the tolerance of it; only the
+      // others are evaluated on the moved spans.
+      const double shift = d.norm();
+      auto bound = [&](Index slot) {
+        if (feet_[slot].d + shift <= f_.tolerance) return Foot{feet_[slot].span, feet_[slot].x, feet_[slot].d + shift};
+        return moved(slot);
+      };
       for (Index j : spans) {
-        if (ok && changed(feet_[worst_[j]].span, k) && !(moved(worst_[j]).d <= f_.tolerance)) ok = false;
+        if (ok && changed(feet_[worst_[j]].span, k) && !(bound(worst_[j]).d <= f_.tolerance)) ok = false;
       }
       updates.clear();
       worstNew_.clear();
@@ -261,7 +254,7 @@ private:
           const Index slot = q - f_.at.front();
           double d = feet_[slot].d;
           if (changed(feet_[slot].span, k)) {
-            const Foot m = moved(slot);
+            const Foot m = bound(slot);
             if (!(m.d <= f_.tolerance)) ok = false;
             updates.push_back({slot, m});
             d = m.d;
