@@ -378,7 +378,7 @@ def fit_options(e, closed=False, tol_exp=2, noise=None, tangents=False, fairing=
     return e.byte(64).byte(64).byte(0 if fairing else 224)
 
 
-seed("fuzz_fair_fit", "noisy_half_turn_2000", fit_options(dense(Enc(), 2000, 4.0, math.pi, 65535)))
+seed("fuzz_fair_fit", "noisy_half_turn_500", fit_options(dense(Enc(), 500, 4.0, math.pi, 65535)))
 seed("fuzz_fair_fit", "noise_free_s_curve_500_unfaired",
      fit_options(dense(Enc(), 500, 4.0, 2 * math.pi, 0, s_curve=True), tol_exp=3, fairing=False))
 seed("fuzz_fair_fit", "noisy_line_3d_300_given_noise", fit_options(dense(Enc(), 300, 2.0, 0.0, 32768, dim=3),

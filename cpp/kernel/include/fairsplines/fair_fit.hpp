@@ -27,9 +27,10 @@ struct FairFitOptions {
   /// (kappa times the unit principal normal; its part along the tangent is ignored).
   /// The zero vector asks for zero curvature.
   std::optional<Eigen::VectorXd> startCurvature, endCurvature;
-  /// Fair the fit once it is within the tolerance: remove the third-derivative jumps at the
-  /// knots where the tolerance allows (fewer curvature extrema; docs/FAIR_FIT.md, step 10).
-  /// false gives the csr-spline of the subset as it is.
+  /// Thin and fair the fit once it is within the tolerance: remove the knots and then the
+  /// third-derivative jumps at the knots that the tolerance allows (fewer poles, fewer
+  /// curvature extrema; docs/FAIR_FIT.md, step 10). false gives the csr-spline of the subset
+  /// as it is.
   bool fairing = true;
 };
 
@@ -49,9 +50,11 @@ struct FairFitResult {
 /// options.tolerance of the curve (verified by projecting each sample onto the curve
 /// before returning), which interpolates q_0 and q_{n-1} of open data (and meets the given
 /// end tangents and curvatures), and which is the csr-spline (eq. (6)) of an adaptively
-/// chosen subset of noise-smoothed samples. Few poles, and no more curvature sign changes
-/// than the data's smoothed curvature has above its noise, are sought, not proved
-/// (docs/FAIR_FIT.md says which parts are heuristic; the result reports both counts).
+/// chosen subset of noise-smoothed samples, then thinned (knots removed) and faired (pole
+/// moves) within the tolerance (options.fairing). Few poles, few curvature extrema, and no
+/// more curvature sign changes than the data's smoothed curvature has above its noise, are
+/// sought, not proved (docs/FAIR_FIT.md says which parts are heuristic; the result reports
+/// both counts).
 /// Throws InputError for samples validateSamples refuses (fewer than 4 rows, not 2 or 3
 /// columns, a coordinate that is not finite, all points coincident, two consecutive points
 /// (cyclically, when closed) coincident), a tolerance that is not positive and finite, a
