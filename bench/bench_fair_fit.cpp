@@ -14,6 +14,7 @@
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_Type.hxx>
 #include <TColgp_Array1OfPnt.hxx>
 #include <signal.h>
 #include <sys/wait.h>
@@ -113,15 +114,18 @@ Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatri
   if (child == 0) {
     close(fds[0]);
     Row c;
+    char why[160] = "";
     try {
       Handle(Geom_BSplineCurve) curve;
       const double t = bestSeconds([&] { curve = fit(); }, repeats);
       c = measure(curve, q, t);
     } catch (const Standard_Failure& e) {
       c.poles = -1;
+      std::snprintf(why, sizeof why, "%s: %s", e.DynamicType()->Name(), e.GetMessageString());
     }
     const double out[5] = {double(c.poles), c.deviation, c.seconds, double(c.signChanges), double(c.extrema)};
     if (write(fds[1], out, sizeof out) != static_cast<ssize_t>(sizeof out)) _exit(1);
+    if (write(fds[1], why, sizeof why) != static_cast<ssize_t>(sizeof why)) _exit(1);
     _exit(0);
   }
   close(fds[1]);
@@ -141,10 +145,18 @@ Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatri
     usleep(20000);
   }
   double in[5];
-  const bool ok = read(fds[0], in, sizeof in) == static_cast<ssize_t>(sizeof in);
+  char why[160] = "";
+  const bool ok = read(fds[0], in, sizeof in) == static_cast<ssize_t>(sizeof in) &&
+                  read(fds[0], why, sizeof why) == static_cast<ssize_t>(sizeof why);
   close(fds[0]);
-  if (!ok || in[0] < 0) {
-    r.note = "failed (OCCT raised)";
+  why[sizeof why - 1] = '\0';
+  if (!ok) {
+    r.note = WIFSIGNALED(status) ? "failed: the child died (signal " + std::to_string(WTERMSIG(status)) + ")"
+                                 : "failed: no result from the child";
+    return r;
+  }
+  if (in[0] < 0) {
+    r.note = std::string("failed: OCCT raised ") + why;
     return r;
   }
   r.poles = int(in[0]), r.deviation = in[1], r.seconds = in[2], r.signChanges = int(in[3]), r.extrema = int(in[4]);
@@ -174,6 +186,11 @@ int main(int argc, char** argv) {
     const double tFair = bestSeconds([&] { fair = fairFit(q, o); }, repeats);
     const Row rf = measure(toOcct(fair), q, tFair);
     print("fair fit", rf);
+    FairFitOptions plain = o;  // the csr-spline of the chosen subset, without step 10
+    plain.fairing = false;
+    BSplineCurve unpolished;
+    const double tPlain = bestSeconds([&] { unpolished = fairFit(q, plain); }, repeats);
+    print("  without thinning/fairing", measure(toOcct(unpolished), q, tPlain));
 
     BSplineCurve csr;
     const double tCsr = bestSeconds([&] { csr = csrSpline(q); }, repeats);
