@@ -578,6 +578,9 @@ CRASH_SEEDS = {
         "g2_k0_denormal_nan_to_int",
         "g2_k1_-1e300_float_to_int_overflow",
     ],
+    "fuzz_fair_fit": [
+        "tolerance_denormal_window_inf_to_long",
+    ],
     "fuzz_monotone": [
         "alg2_nearly_straight_inf_pole",
         "algorithm1_denormal_knot_too_close",

@@ -64,8 +64,10 @@ public:
     smooth_ = sigma_ > 0.01 * tau;
     // Position window: the centre estimate of a quadratic fit over M samples has a standard
     // deviation of about 1.5 sigma / sqrt(M); M is chosen so that it is at most tolerance / 8.
+    // (Clamped as a double: noise far above the tolerance makes M infinite.)
     const double M = 2.25 * std::pow(8.0 * sigma_ / tau, 2.0);
-    kPos_ = std::clamp<Index>(static_cast<Index>(std::ceil((M - 1.0) / 2.0)), 2, 64);
+    const double halfWindow = std::ceil((M - 1.0) / 2.0);
+    kPos_ = halfWindow >= 64.0 ? 64 : halfWindow >= 2.0 ? static_cast<Index>(halfWindow) : 2;
     // Curvature window: 1/64 of the samples (at least 8, at most 4096 each side).
     kCurv_ = std::clamp<Index>(S_.n / 64, std::max<Index>(8, 2 * kPos_), 4096);
     kCurv_ = std::max<Index>(1, std::min<Index>(kCurv_, (S_.n - 1) / 4));
