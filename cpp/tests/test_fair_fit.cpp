@@ -16,6 +16,7 @@
 #include "fairsplines/errors.hpp"
 #include "fairsplines/fair_fit.hpp"
 #include "fairsplines/occt.hpp"
+#include "fair_fit_detail.hpp"
 
 using namespace fairsplines;
 
@@ -400,4 +401,53 @@ TEST(FairFit, UsesAboutAsFewPolesAsOcctsApproximation) {
   EXPECT_LE(maxDistance(fit, q), o.tolerance);
   EXPECT_LE(fit->NbPoles(), 1.3 * occt->NbPoles()) << fit->NbPoles() << " vs OCCT's " << occt->NbPoles();
   EXPECT_EQ(signChanges(signedCurvature(fit)), 0);
+}
+
+// The fit reads its spans from the poles and knots (O(1) a span; OCCT's evaluation costs
+// O(knots) per point): OCCT's LocalD3 is the referee, on clamped and periodic cubics with
+// uneven knots, before and after OCCT removed a knot.
+TEST(FairFit, SpanPolynomialsFromPolesAgreeWithOcct) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> step(0.2, 3.0), coord(-5.0, 5.0);
+  for (bool periodic : {false, true}) {
+    for (int m : {1, 2, 5, 12}) {
+      if (periodic && m < 4) continue;
+      Eigen::VectorXd t(m + 1);
+      t[0] = -1.5;
+      for (int i = 1; i <= m; ++i) t[i] = t[i - 1] + step(rng);
+      BSplineCurve c;
+      c.degree = 3;
+      c.periodic = periodic;
+      c.poles.resize(periodic ? m : m + 3, 3);
+      for (Eigen::Index i = 0; i < c.poles.rows(); ++i) c.poles.row(i) << coord(rng), coord(rng), coord(rng);
+      c.knots = t;
+      c.mults = Eigen::VectorXi::Ones(m + 1);
+      if (!periodic) c.mults[0] = c.mults[m] = 4;
+      Handle(Geom_BSplineCurve) occ = toOcct(c);
+      for (int pass = 0; pass < 2; ++pass) {
+        SCOPED_TRACE(std::string(periodic ? "periodic" : "clamped") + ", spans " + std::to_string(occ->NbKnots() - 1));
+        std::vector<double> knots;
+        for (int i = 1; i <= occ->NbKnots(); ++i) knots.push_back(occ->Knot(i));
+        for (Eigen::Index j = 0; j + 1 < static_cast<Eigen::Index>(knots.size()); ++j) {
+          const auto poly = detail::fairfit::spanPoly(occ, knots, j);
+          for (double f : {0.0, 0.37, 1.0}) {
+            const double x = f * (knots[j + 1] - knots[j]);
+            gp_Pnt p;
+            gp_Vec d1, d2, d3;
+            occ->LocalD3(knots[j] + x, static_cast<int>(j) + 1, static_cast<int>(j) + 2, p, d1, d2, d3);
+            const Eigen::Vector3d C = ((poly[3] * x + poly[2]) * x + poly[1]) * x + poly[0];
+            const Eigen::Vector3d C1 = (3 * poly[3] * x + 2 * poly[2]) * x + poly[1];
+            const Eigen::Vector3d C2 = 6 * poly[3] * x + 2 * poly[2];
+            EXPECT_LE((C - Eigen::Vector3d(p.X(), p.Y(), p.Z())).norm(), 1e-12 * 50);
+            EXPECT_LE((C1 - Eigen::Vector3d(d1.X(), d1.Y(), d1.Z())).norm(), 1e-11 * (1 + d1.Magnitude()));
+            EXPECT_LE((C2 - Eigen::Vector3d(d2.X(), d2.Y(), d2.Z())).norm(), 1e-10 * (1 + d2.Magnitude()));
+            EXPECT_LE((6 * poly[3] - Eigen::Vector3d(d3.X(), d3.Y(), d3.Z())).norm(), 1e-9 * (1 + d3.Magnitude()));
+          }
+        }
+        if (occ->NbKnots() - 1 < (periodic ? 6 : 3)) break;
+        occ = Handle(Geom_BSplineCurve)::DownCast(occ->Copy());
+        occ->RemoveKnot(occ->NbKnots() / 2, 0, HUGE_VAL);
+      }
+    }
+  }
 }

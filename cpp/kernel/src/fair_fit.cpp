@@ -88,6 +88,7 @@ public:
       shape_ = dataShape(S_, planar_, sigma_, tau, kCurv_, dim_ == 2);
     }
     result.dataSignChanges = shape_.signChanges;
+    if (plane_.planar) normal_ = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
 
     detail::WorkBudget budget(400.0 * static_cast<double>(S_.n) + 1e6, "the fair fit of these points",
                               "the tolerance needs more refinement passes than the data's size allows");
@@ -107,7 +108,7 @@ public:
     };
     fitWithin();
     Handle(Geom_BSplineCurve) occ = toOcct(curve);
-    CurvatureProfile profile = curvatureProfile(occ, 0, 16);
+    CurvatureProfile profile = profileOf(curve, occ);
     int changes = curvatureSignChanges(profile);
     // Unsupported inflections, first remedy: a csr span depends on the 8 subset points
     // around it (eq. (6): c_i on f_{i-1}, f_i, f_{i+1}), so a straight run with fewer has no
@@ -116,7 +117,7 @@ public:
     if (changes > shape_.signChanges && densifyStraightRuns(sub)) {
       fitWithin();
       occ = toOcct(curve);
-      profile = curvatureProfile(occ, 0, 16);
+      profile = profileOf(curve, occ);
       changes = curvatureSignChanges(profile);
     }
     // Second remedy: try removing a subset point next to each extra sign change while the
@@ -135,7 +136,7 @@ public:
           const double d = deviations(candidate, fewer, dev, &cFeet);
           if (!(d <= tau)) continue;
           const Handle(Geom_BSplineCurve) cOcc = toOcct(candidate);
-          const CurvatureProfile cProfile = curvatureProfile(cOcc, 0, 16);
+          const CurvatureProfile cProfile = profileOf(candidate, cOcc);
           const int cChanges = curvatureSignChanges(cProfile);
           if (cChanges < changes) {
             sub = std::move(fewer), curve = candidate, occ = cOcc, profile = cProfile, changes = cChanges, maxDev = d;
@@ -341,8 +342,7 @@ private:
     std::vector<Index> at = sub.index;
     if (S_.closed) at.push_back(sub.index.front() + S_.n);
     const Index fixedStart = startK_ ? 3 : 2, fixedEnd = endK_ ? 3 : 2;
-    std::optional<Vector3d> normal;
-    if (plane_.planar) normal = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
+    const std::optional<Vector3d>& normal = normal_;
     const double zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
     Thinning th;
@@ -358,7 +358,7 @@ private:
     if (thinned != occ && th.maxDeviation <= o_.tolerance) {
       BSplineCurve c = fromOcct(thinned);
       c.poles = c.poles.leftCols(dim_).eval();
-      CurvatureProfile tProfile = curvatureProfile(thinned, 0, 16);
+      CurvatureProfile tProfile = profileOf(c, thinned);
       const int tChanges = curvatureSignChanges(tProfile);
       if (c.poles.allFinite() && tChanges <= changes) {
         curve = std::move(c), maxDev = th.maxDeviation, changes = tChanges, profile = std::move(tProfile);
@@ -397,11 +397,18 @@ private:
     if (!faired.poles.allFinite()) return;
     const double d = f.maxDeviation;
     if (!(d <= o_.tolerance)) return;
-    CurvatureProfile fProfile = curvatureProfile(toOcct(faired), 0, 16);
+    CurvatureProfile fProfile = profileOf(faired, toOcct(faired));
     const int fChanges = curvatureSignChanges(fProfile);
     const int fExtrema = static_cast<int>(curvatureExtrema(fProfile).size());
     if (fChanges > changes || fExtrema >= extrema) return;
     curve = std::move(faired), maxDev = d, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
+  }
+
+  /// The curve's curvature profile from its span polynomials (16 samples a span; signed
+  /// about the data's plane when the data are planar): O(spans), where OCCT's evaluation
+  /// (curvatureProfile) costs O(knots) per point on a curve with a knot per chosen sample.
+  CurvatureProfile profileOf(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ) const {
+    return spanProfile(spanPolys(curve, occ), normal_, 16);
   }
 
   /// Intervals beyond the tolerance get their middle sample; intervals of neighbouring
@@ -482,6 +489,7 @@ private:
   bool smooth_ = false;
   Index kPos_ = 2, kCurv_ = 8;
   Plane plane_;
+  std::optional<Vector3d> normal_;  // the data's plane normal, for the signs of curvature (planar data)
   std::vector<Vector3d> planar_;
   DataShape shape_;
 };

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "fairsplines/analysis.hpp"
 #include "fairsplines/types.hpp"
 
 namespace fairsplines::detail::fairfit {
@@ -103,7 +104,9 @@ struct SpanPolys {
   double h(Index j) const { return t[j + 1] - t[j]; }
 };
 
-/// Span j of `occ` (knots t, as SpanPolys::t) as its cubic polynomial about t_j.
+/// Span j of `occ` (a cubic with simple interior knots, clamped or periodic; knots t, as
+/// SpanPolys::t) as its cubic polynomial about t_j, from the four poles and six knots around
+/// it (O(1); OCCT's own evaluation costs O(knots) per point on such a curve).
 std::array<Vector3d, 4> spanPoly(const Handle(Geom_BSplineCurve)& occ, const std::vector<double>& t, Index j);
 
 /// Every span of `curve` (its OCCT twin `occ`) as its cubic polynomial about its start
@@ -124,6 +127,12 @@ struct Foot {
 
 /// projectDistance with the curve point it found.
 Foot projectFoot(const SpanPolys& P, const Vector3d& p, Index j, double x);
+
+/// The curvature of the curve of P at perSpan + 1 points per span (spans sharing their ends),
+/// signed about `normal` when given, else its magnitude; arc length by chords. For
+/// curvatureSignChanges and curvatureExtrema (analysis.hpp) in O(spans), where
+/// curvatureProfile's OCCT evaluation costs O(knots) per point.
+CurvatureProfile spanProfile(const SpanPolys& P, const std::optional<Vector3d>& normal, int perSpan);
 
 /// Sign changes of the curvature about `normal` over the given spans of P in that order (16
 /// samples a span; curvatures of at most zeroKappa have no sign).

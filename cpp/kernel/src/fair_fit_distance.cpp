@@ -17,12 +17,45 @@ namespace fairsplines::detail::fairfit {
 // The curve's spans as cubic polynomials, and the projection of the samples
 
 std::array<Vector3d, 4> spanPoly(const Handle(Geom_BSplineCurve)& occ, const std::vector<double>& t, Index j) {
-  gp_Pnt p;
-  gp_Vec d1, d2, d3;
-  // The right-hand derivatives at t_j, from span j's polynomial (knots numbered from 1).
-  occ->LocalD3(t[j], static_cast<int>(j + 1), static_cast<int>(j + 2), p, d1, d2, d3);
-  return {Vector3d(p.X(), p.Y(), p.Z()), Vector3d(d1.X(), d1.Y(), d1.Z()), 0.5 * Vector3d(d2.X(), d2.Y(), d2.Z()),
-          Vector3d(d3.X(), d3.Y(), d3.Z()) / 6.0};
+  // The four poles Q_0..Q_3 and six knots k_0..k_5 around span j = [k_2, k_3] of a cubic with
+  // simple interior knots t_0..t_m: poles j..j+3, clamped (end knots of multiplicity 4) or
+  // periodic (pole indices modulo m, knots continued by the period; OCCT's numbering,
+  // checked against its evaluation by FairFit.SpanPolynomialsFromPolesAgreeWithOcct). Read
+  // directly: OCCT's own evaluation locates the span's first pole by summing the
+  // multiplicities before it, O(knots) per point.
+  const Index m = static_cast<Index>(t.size()) - 1;
+  const bool periodic = occ->IsPeriodic();
+  const double period = t[m] - t[0];
+  auto knot = [&](Index i) {
+    if (!periodic) return t[std::clamp<Index>(i, 0, m)];
+    const Index wraps = i >= 0 ? i / m : -((-i + m - 1) / m);
+    return t[i - wraps * m] + static_cast<double>(wraps) * period;
+  };
+  std::array<Vector3d, 4> d;
+  std::array<double, 6> k;
+  for (int r = 0; r < 4; ++r) {
+    const Index i = periodic ? (j + r) % m : j + r;
+    const gp_Pnt& x = occ->Pole(static_cast<int>(i) + 1);
+    d[r] = Vector3d(x.X(), x.Y(), x.Z());
+  }
+  for (int r = 0; r < 6; ++r) k[r] = knot(j - 2 + r);
+  // Derivative poles (de Boor): degree 2 on k_1..k_4, degree 1 on k_2..k_3, the constant.
+  const std::array<Vector3d, 3> d1 = {3.0 * (d[1] - d[0]) / (k[3] - k[0]), 3.0 * (d[2] - d[1]) / (k[4] - k[1]),
+                                      3.0 * (d[3] - d[2]) / (k[5] - k[2])};
+  const std::array<Vector3d, 2> d2 = {2.0 * (d1[1] - d1[0]) / (k[3] - k[1]), 2.0 * (d1[2] - d1[1]) / (k[4] - k[2])};
+  const Vector3d d3 = (d2[1] - d2[0]) / (k[3] - k[2]);
+  // At the knot u = k_2: C' from the two quadratic B-splines not zero there, C from de Boor's
+  // algorithm (the blossom F[k_1, k_2, k_2] ... reduces to two steps).
+  const Vector3d c1 = ((k[3] - k[2]) * d1[0] + (k[2] - k[1]) * d1[1]) / (k[3] - k[1]);
+  std::array<Vector3d, 4> b = d;
+  const double u = k[2];
+  for (int r = 1; r <= 3; ++r) {
+    for (int q = 3; q >= r; --q) {
+      const double alpha = (u - k[q - 1]) / (k[q + 3 - r] - k[q - 1]);
+      b[q] = (1.0 - alpha) * b[q - 1] + alpha * b[q];
+    }
+  }
+  return {b[3], c1, 0.5 * d2[0], d3 / 6.0};
 }
 
 SpanPolys spanPolys(const BSplineCurve& curve, const Handle(Geom_BSplineCurve)& occ) {
@@ -93,6 +126,41 @@ int signChangesOver(const SpanPolys& P, const std::vector<Index>& spans, const V
     }
   }
   return changes;
+}
+
+CurvatureProfile spanProfile(const SpanPolys& P, const std::optional<Vector3d>& normal, int perSpan) {
+  const Index spans = P.spans();
+  const Index count = spans * perSpan + 1;
+  CurvatureProfile profile;
+  profile.isSigned = normal.has_value();
+  if (normal) profile.normal = gp_Vec(normal->x(), normal->y(), normal->z());
+  profile.u.resize(count), profile.s.resize(count), profile.kappa.resize(count);
+  Vector3d last;
+  double length = 0.0;
+  Index n = 0;
+  for (Index j = 0; j < spans; ++j) {
+    const auto& c = P.c[j];
+    const double h = P.h(j);
+    for (int q = 0; q <= perSpan; ++q) {
+      if (q == perSpan && j + 1 < spans) break;  // the next span's first sample
+      const double x = h * q / perSpan;
+      const Vector3d C = ((c[3] * x + c[2]) * x + c[1]) * x + c[0];
+      const Vector3d C1 = (3.0 * c[3] * x + 2.0 * c[2]) * x + c[1], C2 = 6.0 * c[3] * x + 2.0 * c[2];
+      // kappa = |C' x C''| / |C'|^3, as (T x C'' / v) / v with v = |C'|, T = C' / v: no
+      // overflow for data of any size.
+      const double v = C1.norm();
+      const Vector3d k = (C1 / v).cross(C2 / v) / v;
+      double kappa = normal ? k.dot(*normal) : k.norm();
+      if (!std::isfinite(kappa)) kappa = 0.0;  // a stationary point: no curvature to count
+      if (n > 0) length += (C - last).norm();
+      last = C;
+      profile.u[n] = P.t[j] + x;
+      profile.s[n] = length;
+      profile.kappa[n] = kappa;
+      ++n;
+    }
+  }
+  return profile;
 }
 
 }  // namespace fairsplines::detail::fairfit
