@@ -381,8 +381,8 @@ def fit_options(e, closed=False, tol_exp=2, noise=None, tangents=False, fairing=
 seed("fuzz_fair_fit", "noisy_half_turn_500", fit_options(dense(Enc(), 500, 4.0, math.pi, 65535)))
 seed("fuzz_fair_fit", "noise_free_s_curve_500_unfaired",
      fit_options(dense(Enc(), 500, 4.0, 2 * math.pi, 0, s_curve=True), tol_exp=3, fairing=False))
-seed("fuzz_fair_fit", "noisy_line_3d_300_given_noise", fit_options(dense(Enc(), 300, 2.0, 0.0, 32768, dim=3),
-                                                                  noise=0.5))
+seed("fuzz_fair_fit", "noisy_line_3d_300_given_noise",
+     fit_options(dense(Enc(), 300, 2.0, 0.0, 32768, dim=3), noise=0.5))
 seed("fuzz_fair_fit", "closed_circle_12", fit_options(points_circle(Enc().byte(0), 12, 1.0, 0.0, 4.0), closed=True))
 seed("fuzz_fair_fit", "open_circle_12_end_tangents",
      fit_options(points_circle(Enc().byte(0), 12, 1.0, 0.0, 2.0), tol_exp=4, tangents=True))
