@@ -349,24 +349,26 @@ private:
     th.tolerance = o_.tolerance;
     th.samples = &S_;
     th.at = at;
-    th.feet = feet;
+    th.feet = std::move(feet);  // given back as they were when no knot is removed
     th.fixedStart = fixedStart, th.fixedEnd = fixedEnd;
     th.normal = normal;
     th.zeroKappa = zeroKappa;
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const Handle(Geom_BSplineCurve) thinned = removeKnots(occ, th);
-    if (thinned != occ && th.maxDeviation <= o_.tolerance) {
+    if (thinned != occ) {
       BSplineCurve c = fromOcct(thinned);
       c.poles = c.poles.leftCols(dim_).eval();
       CurvatureProfile tProfile = profileOf(c, thinned);
       const int tChanges = curvatureSignChanges(tProfile);
-      if (c.poles.allFinite() && tChanges <= changes) {
+      if (th.maxDeviation <= o_.tolerance && c.poles.allFinite() && tChanges <= changes) {
         curve = std::move(c), maxDev = th.maxDeviation, changes = tChanges, profile = std::move(tProfile);
         extrema = static_cast<int>(curvatureExtrema(profile).size());
-        at = std::move(th.at), feet = std::move(th.feet);
+        at = std::move(th.at);
+      } else {
+        th.feet.clear();  // on the thinned curve, not this one: fairing projects the samples itself
       }
     }
-    fair(curve, at, std::move(feet), maxDev, changes, extrema, profile, fixedStart, fixedEnd, normal, zeroKappa);
+    fair(curve, at, std::move(th.feet), maxDev, changes, extrema, profile, fixedStart, fixedEnd, normal, zeroKappa);
   }
 
   /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is

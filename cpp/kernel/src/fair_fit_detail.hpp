@@ -195,8 +195,9 @@ struct Thinning {
 /// their estimated removal error, by OCCT's knot removal, when every sample near the changed
 /// spans stays within the tolerance and their curvature sign changes do not increase; up to
 /// three passes, within a work budget of about 20 sample evaluations per sample. Returns the
-/// thinned curve (a new one), or `occ` itself when no knot was removed or the final check
-/// over all samples failed (then `t` is as given).
+/// thinned curve (a new one), or `occ` itself: when no knot was removed (then `t` is as
+/// given) or the final check over all samples failed (then `t.at` is as given and `t.feet`
+/// is empty).
 Handle(Geom_BSplineCurve) removeKnots(const Handle(Geom_BSplineCurve)& occ, Thinning& t);
 
 }  // namespace fairsplines::detail::fairfit

@@ -90,6 +90,7 @@ private:
         }
       }
     }
+    updates_.reserve(slots);  // (pages are only touched as it fills: no growth by copying)
     worst_.assign(m_, 0);
     for (Index j = 0; j < m_; ++j) worst_[j] = worstOf(j);
   }

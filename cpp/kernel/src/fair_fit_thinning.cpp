@@ -35,6 +35,7 @@ public:
     for (Index j = 0; j < m; ++j) P_.c[j] = spanPoly(occ_, P_.t, j);
     // Each sample's curve point as a parameter: unchanged by removing a knot elsewhere.
     U_.resize(slots), D_.resize(slots);
+    moved_.reserve(slots);  // (pages are only touched as it fills: no growth by copying)
     for (Index s = 0; s < slots; ++s) U_[s] = P_.t[t_.feet[s].span] + t_.feet[s].x, D_[s] = t_.feet[s].d;
     const std::vector<Index> at0 = t_.at;
     budget_ = 20.0 * static_cast<double>(S_.n) + 1e6;  // sample evaluations and pole copies
@@ -60,17 +61,16 @@ public:
     // Every sample evaluated again on the final curve (an upper bound of its distance, as in
     // step 7); a sample beyond the tolerance (one whose curve point moved from outside the
     // windows checked) gives back the curve before thinning.
-    std::vector<Foot> feet(slots);
     double worst = 0.0;
     for (Index s = 0; s < slots; ++s) {
-      feet[s] = footOf(s);
-      worst = std::max(worst, std::isfinite(feet[s].d) ? feet[s].d : HUGE_VAL);
+      t_.feet[s] = footOf(s);
+      worst = std::max(worst, std::isfinite(t_.feet[s].d) ? t_.feet[s].d : HUGE_VAL);
     }
     if (!(worst <= t_.tolerance)) {
       t_.at = at0;
+      t_.feet.clear();
       return original_;
     }
-    t_.feet = std::move(feet);
     t_.maxDeviation = worst;
     return occ_;
   }
