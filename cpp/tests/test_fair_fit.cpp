@@ -451,3 +451,28 @@ TEST(FairFit, SpanPolynomialsFromPolesAgreeWithOcct) {
     }
   }
 }
+
+// Scale-free (docs/FAIR_FIT.md, "Checks"): samples 1e300 or 1e-300 in size fit as at size 1
+// (they were refused as "points coincide": an overflowing or underflowing square). OCCT is the
+// referee on the curve scaled back to size 1.
+TEST(FairFit, SamplesOfAnySizeFitAsAtSizeOne) {
+  PointMatrix q = arcParabola(2000);
+  addNoise(q, 1e-4, 7);
+  FairFitOptions o;
+  o.tolerance = 1e-3 * sizeOf(q);
+  const FairFitResult one = fairFitReport(q, o);
+  for (double s : {1e300, 1e-300, 1e-150, 1e120}) {
+    SCOPED_TRACE(s);
+    FairFitOptions so = o;
+    so.tolerance = o.tolerance * s;
+    const FairFitResult r = fairFitReport(q * s, so);
+    EXPECT_EQ(r.curve.poles.rows(), one.curve.poles.rows());
+    EXPECT_EQ(r.curvatureExtrema, one.curvatureExtrema);
+    EXPECT_LE(r.maxDeviation, so.tolerance);
+    BSplineCurve back = r.curve;
+    back.poles /= s;
+    const Handle(Geom_BSplineCurve) c = toOcct(back);
+    EXPECT_LE(maxDistance(c, q, 2), o.tolerance * (1 + 1e-9));
+    EXPECT_EQ(signChanges(signedCurvature(c)), 0);
+  }
+}

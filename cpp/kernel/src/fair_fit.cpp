@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <gp_Pnt.hxx>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -38,6 +39,16 @@ struct Subset {
 class FairFitter {
 public:
   FairFitter(PointsRef q, const FairFitOptions& o) : q_(q), o_(o), S_(readSamples(q, o.closed)), dim_(q.cols()) {
+    const Ends ends = readOptions(o, dim_);
+    startT_ = ends.startT, endT_ = ends.endT, startK_ = ends.startK, endK_ = ends.endK;
+  }
+
+  /// The end conditions of `o` as unit tangents and curvature vectors (across the tangent),
+  /// after checking every option (InputError naming the first that is wrong).
+  struct Ends {
+    std::optional<Vector3d> startT, endT, startK, endK;
+  };
+  static Ends readOptions(const FairFitOptions& o, Index dim) {
     if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) {
       throw InputError("the fair fit's tolerance must be positive and finite, got " + exactNumber(o.tolerance));
     }
@@ -47,10 +58,12 @@ public:
     if (o.closed && (o.startTangent || o.endTangent || o.startCurvature || o.endCurvature)) {
       throw InputError("closed data have no ends: end tangents and curvatures are for open data only");
     }
-    startT_ = direction(o.startTangent, "the start tangent");
-    endT_ = direction(o.endTangent, "the end tangent");
-    startK_ = curvatureVector(o.startCurvature, startT_, "the start curvature", "start");
-    endK_ = curvatureVector(o.endCurvature, endT_, "the end curvature", "end");
+    Ends e;
+    e.startT = direction(o.startTangent, dim, "the start tangent");
+    e.endT = direction(o.endTangent, dim, "the end tangent");
+    e.startK = curvatureVector(o.startCurvature, e.startT, dim, "the start curvature", "start");
+    e.endK = curvatureVector(o.endCurvature, e.endT, dim, "the end curvature", "end");
+    return e;
   }
 
   FairFitResult run() {
@@ -170,18 +183,20 @@ private:
     x.head(dim) = v;
     return x;
   }
-  std::optional<Vector3d> direction(const std::optional<Eigen::VectorXd>& v, const std::string& name) const {
+  static std::optional<Vector3d> direction(const std::optional<Eigen::VectorXd>& v, Index dim,
+                                           const std::string& name) {
     if (!v) return std::nullopt;
-    Vector3d x = *unitOf(*v, dim_, name);
-    const double len = x.norm();
+    Vector3d x = *unitOf(*v, dim, name);
+    const double len = x.stableNorm();
     if (!(len > 0.0) || !std::isfinite(len)) throw InputError(name + " is the zero vector: it needs a direction");
     return x / len;
   }
-  std::optional<Vector3d> curvatureVector(const std::optional<Eigen::VectorXd>& v, const std::optional<Vector3d>& t,
-                                          const std::string& name, const char* end) const {
+  static std::optional<Vector3d> curvatureVector(const std::optional<Eigen::VectorXd>& v,
+                                                 const std::optional<Vector3d>& t, Index dim, const std::string& name,
+                                                 const char* end) {
     if (!v) return std::nullopt;
     if (!t) throw InputError(name + " needs the " + std::string(end) + " tangent too (G2 is tangent and curvature)");
-    const Vector3d k = *unitOf(*v, dim_, name);
+    const Vector3d k = *unitOf(*v, dim, name);
     return k - k.dot(*t) * *t;
   }
 
@@ -498,7 +513,36 @@ private:
 
 }  // namespace
 
-FairFitResult fairFitReport(PointsRef q, const FairFitOptions& options) { return FairFitter(q, options).run(); }
+FairFitResult fairFitReport(PointsRef q, const FairFitOptions& options) {
+  // Scale-free: the fit runs on the points divided by a power of two near their largest
+  // coordinate (exact, so the same digits as at that size), with the tolerance, noise and end
+  // curvatures in the same units, and the curve is scaled back (exact). So samples 1e300 or
+  // 1e-300 in size fit as those of size 1 do, not "points coincide" from an overflowing or
+  // underflowing square. The options are checked as given first, for messages in the user's
+  // numbers. Data between 1e-100 and 1e100 fit as they are.
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < q.rows(); ++i)
+    for (Eigen::Index c = 0; c < q.cols(); ++c)
+      if (std::isfinite(q(i, c))) largest = std::max(largest, std::abs(q(i, c)));
+  if (!(largest > 1e100 || (largest > 0.0 && largest < 1e-100)) || (q.cols() != 2 && q.cols() != 3)) {
+    return FairFitter(q, options).run();
+  }
+  FairFitter::readOptions(options, q.cols());
+  const double scale = powerOfTwoScale(largest);
+  FairFitOptions o = options;
+  // A tolerance beyond the data's reach in either direction stays beyond it (not 0 or inf).
+  o.tolerance = std::clamp(options.tolerance / scale, std::numeric_limits<double>::min(), 1e300);
+  if (o.noise) o.noise = std::min(*o.noise / scale, 1e300);
+  if (o.startCurvature) *o.startCurvature *= scale;
+  if (o.endCurvature) *o.endCurvature *= scale;
+  const PointMatrix unit = q / scale;
+  FairFitResult r = FairFitter(unit, o).run();
+  r.curve.poles *= scale;  // the knots stay those of size 1: parameters OCCT's tolerances suit
+  r.maxDeviation *= scale;
+  r.noise *= scale;
+  requireValidCurve(r.curve, "the fair fit of these points");
+  return r;
+}
 
 BSplineCurve fairFit(PointsRef q, const FairFitOptions& options) { return fairFitReport(q, options).curve; }
 

@@ -46,7 +46,8 @@ public:
       std::vector<std::pair<double, double>> order;  // (estimated error, knot)
       for (Index k = 1; k < P_.spans(); ++k) {
         const double h = 0.5 * (P_.h(k - 1) + P_.h(k));
-        order.push_back({(P_.c[k][3] - P_.c[k - 1][3]).norm() * h * h * h, P_.t[k]});
+        const double cost = (P_.c[k][3] - P_.c[k - 1][3]).norm() * h * h * h;
+        order.push_back({cost >= 0.0 ? cost : HUGE_VAL, P_.t[k]});  // (0 x inf at 1e300: last)
       }
       std::sort(order.begin(), order.end());
       bool any = false;
