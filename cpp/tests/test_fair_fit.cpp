@@ -75,6 +75,16 @@ PointMatrix road(Eigen::Index n) {
   return q;
 }
 
+/// The ellipse 3 x 1, n samples at equal parameter steps, the first not repeated (closed data).
+PointMatrix closedEllipse(Eigen::Index n) {
+  PointMatrix q(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    q.row(i) << 3 * std::cos(t), std::sin(t);
+  }
+  return q;
+}
+
 /// OCCT's signed curvature (about +z) at `perSpan` parameters per knot span.
 std::vector<double> signedCurvature(const Handle(Geom_BSplineCurve)& c, int perSpan = 20) {
   std::vector<double> k;
@@ -207,11 +217,7 @@ TEST(FairFit, NoiseFreeDataUseNoMorePolesThanTheCsrSplineAndInterpolateTheEnds) 
 }
 
 TEST(FairFit, ClosedDataGiveAPeriodicConvexCurve) {
-  PointMatrix q(4000, 2);
-  for (Eigen::Index i = 0; i < q.rows(); ++i) {
-    const double t = 2 * M_PI * static_cast<double>(i) / 4000.0;
-    q.row(i) << 3 * std::cos(t), std::sin(t);
-  }
+  PointMatrix q = closedEllipse(4000);
   addNoise(q, 1e-4, 3);
   FairFitOptions o;
   o.tolerance = 1e-3 * sizeOf(q);
@@ -367,11 +373,7 @@ TEST(FairFit, ThinningAndFairingRemovePolesAndCurvatureExtremaWithinTheTolerance
 }
 
 TEST(FairFit, ThinningKeepsClosedDataPeriodicAndWithinTheTolerance) {
-  PointMatrix q(4000, 2);
-  for (Eigen::Index i = 0; i < q.rows(); ++i) {
-    const double t = 2 * M_PI * static_cast<double>(i) / 4000.0;
-    q.row(i) << 3 * std::cos(t), std::sin(t);
-  }
+  PointMatrix q = closedEllipse(4000);
   addNoise(q, 1e-4, 13);
   FairFitOptions o;
   o.tolerance = 1e-3 * sizeOf(q);

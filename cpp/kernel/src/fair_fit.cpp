@@ -349,25 +349,21 @@ private:
 
   /// Step 10 (docs/FAIR_FIT.md): thinning (fair_fit_thinning.cpp), then fairing
   /// (fair_fit_fairing.cpp), each verified over all samples on its final curve. The thinned
-  /// curve replaces the fit when it has no more curvature sign changes (the kernel's
-  /// OCCT-evaluated profile, as before); the faired one when it has no more sign changes and
-  /// fewer curvature extrema.
+  /// curve replaces the fit when it has no more curvature sign changes (the profile of
+  /// step 9); the faired one when it has no more sign changes and fewer curvature extrema.
   void polish(BSplineCurve& curve, const Subset& sub, std::vector<Foot> feet, double& maxDev, int& changes,
               int& extrema, CurvatureProfile& profile) const {
-    std::vector<Index> at = sub.index;
-    if (S_.closed) at.push_back(sub.index.front() + S_.n);
-    const Index fixedStart = startK_ ? 3 : 2, fixedEnd = endK_ ? 3 : 2;
-    const std::optional<Vector3d>& normal = normal_;
-    const double zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
+    Polishing bounds;
+    bounds.tolerance = o_.tolerance;
+    bounds.samples = &S_;
+    bounds.at = sub.index;
+    if (S_.closed) bounds.at.push_back(sub.index.front() + S_.n);
+    bounds.fixedStart = startK_ ? 3 : 2, bounds.fixedEnd = endK_ ? 3 : 2;
+    bounds.normal = normal_;
+    bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
-    Thinning th;
-    th.tolerance = o_.tolerance;
-    th.samples = &S_;
-    th.at = at;
+    Thinning th = bounds;
     th.feet = std::move(feet);  // given back as they were when no knot is removed
-    th.fixedStart = fixedStart, th.fixedEnd = fixedEnd;
-    th.normal = normal;
-    th.zeroKappa = zeroKappa;
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const Handle(Geom_BSplineCurve) thinned = removeKnots(occ, th);
     if (thinned != occ) {
@@ -378,31 +374,23 @@ private:
       if (th.maxDeviation <= o_.tolerance && c.poles.allFinite() && tChanges <= changes) {
         curve = std::move(c), maxDev = th.maxDeviation, changes = tChanges, profile = std::move(tProfile);
         extrema = static_cast<int>(curvatureExtrema(profile).size());
-        at = std::move(th.at);
+        bounds.at = std::move(th.at);
       } else {
         th.feet.clear();  // on the thinned curve, not this one: fairing projects the samples itself
       }
     }
-    fair(curve, at, std::move(th.feet), maxDev, changes, extrema, profile, fixedStart, fixedEnd, normal, zeroKappa);
+    Fairing f{bounds};
+    f.feet = std::move(th.feet);
+    fair(curve, f, maxDev, changes, extrema, profile);
   }
 
   /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is
   /// still within the tolerance (verified over all samples on the faired curve), it has no
   /// more curvature sign changes and fewer curvature extrema.
-  void fair(BSplineCurve& curve, std::vector<Index> at, std::vector<Foot> feet, double& maxDev, int& changes,
-            int& extrema, CurvatureProfile& profile, Index fixedStart, Index fixedEnd,
-            const std::optional<Vector3d>& normal, double zeroKappa) const {
+  void fair(BSplineCurve& curve, Fairing& f, double& maxDev, int& changes, int& extrema,
+            CurvatureProfile& profile) const {
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     SpanPolys P = spanPolys(curve, occ);
-    Fairing f;
-    f.tolerance = o_.tolerance;
-    f.samples = &S_;
-    f.at = std::move(at);
-    f.feet = std::move(feet);
-    f.fixedStart = fixedStart;
-    f.fixedEnd = fixedEnd;
-    f.normal = normal;
-    f.zeroKappa = zeroKappa;
     f.maxMoves = 4 * P.spans();
     if (fairThirdDerivativeJumps(occ, P, f) == 0) return;
     BSplineCurve faired = curve;

@@ -139,30 +139,34 @@ CurvatureProfile spanProfile(const SpanPolys& P, const std::optional<Vector3d>& 
 int signChangesOver(const SpanPolys& P, const std::vector<Index>& spans, const Vector3d& normal, double zeroKappa);
 
 // ---------------------------------------------------------------------------------------
-// Fairing: removing the third-derivative jumps at the knots (fair_fit_fairing.cpp)
+// Step 10: thinning (fair_fit_thinning.cpp) and fairing (fair_fit_fairing.cpp)
 
-/// What fairing may change and must keep.
-struct Fairing {
+/// What step 10 may change and must keep.
+struct Polishing {
   double tolerance = 0.0;
   /// The samples, and the sample index at each knot (the subset: m + 1 values, the last past
   /// n - 1 when closed): span j's samples are at[j] .. at[j + 1].
   const Samples* samples = nullptr;
   std::vector<Index> at;
-  /// Each sample's curve point (at sample index - at[0]), from the last distance check;
-  /// empty: projected here.
+  /// Each sample's curve point (at sample index - at[0]), from the last distance check.
   std::vector<Foot> feet;
-  /// Open curves: poles 0 .. fixedStart - 1 and the last fixedEnd poles are not moved
-  /// (2: end point and tangent leg; 3 with an end curvature).
+  /// Open curves: poles 0 .. fixedStart - 1 and the last fixedEnd poles, and the knots their
+  /// end conditions depend on, do not change (2: end point and tangent leg; 3 with an end
+  /// curvature).
   Index fixedStart = 2, fixedEnd = 2;
   /// Planar curves: the plane's normal, for the signs of curvature (kept from increasing).
   std::optional<Vector3d> normal;
   /// Curvatures of at most this size have no sign.
   double zeroKappa = 0.0;
+  /// Out, when the curve changed: the largest distance of the samples to it (an upper
+  /// bound, verified over every sample on the final curve).
+  double maxDeviation = HUGE_VAL;
+};
+
+/// Fairing: `feet` may be empty (then the samples are projected here).
+struct Fairing : Polishing {
   /// At most this many pole moves.
   Index maxMoves = 0;
-  /// Out, when a move was made: the largest distance of the samples to the faired curve (an
-  /// upper bound, verified over every sample on the final curve).
-  double maxDeviation = HUGE_VAL;
 };
 
 /// Fair `occ` and its span polynomials P in place: knot by knot, largest jump first, the
@@ -171,25 +175,8 @@ struct Fairing {
 /// curvature sign changes do not increase. Returns the moves made.
 Index fairThirdDerivativeJumps(const Handle(Geom_BSplineCurve)& occ, SpanPolys& P, Fairing& f);
 
-// ---------------------------------------------------------------------------------------
-// Thinning: removing knots where the tolerance allows (fair_fit_thinning.cpp)
-
-/// What thinning may change and must keep (as Fairing).
-struct Thinning {
-  double tolerance = 0.0;
-  const Samples* samples = nullptr;
-  /// The sample index at each knot (as Fairing::at); out: those of the thinned curve.
-  std::vector<Index> at;
-  /// Each sample's curve point (as Fairing::feet, required); out: on the thinned curve.
-  std::vector<Foot> feet;
-  /// Open curves: the poles at either end that do not move (as Fairing).
-  Index fixedStart = 2, fixedEnd = 2;
-  std::optional<Vector3d> normal;
-  double zeroKappa = 0.0;
-  /// Out, when a knot was removed: the largest distance of the samples to the thinned curve
-  /// (an upper bound, verified over every sample on the final curve).
-  double maxDeviation = HUGE_VAL;
-};
+/// Thinning: `feet` required; out: `at` and `feet` of the thinned curve.
+using Thinning = Polishing;
 
 /// Remove interior knots of `occ` (a cubic with simple knots) one at a time, in order of
 /// their estimated removal error, by OCCT's knot removal, when every sample near the changed
