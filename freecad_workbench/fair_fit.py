@@ -93,6 +93,10 @@ def fair_fit(points: PointsLike, tolerance: float, closed: bool = False, noise: 
              start_tangent: Optional[VectorLike] = None, end_tangent: Optional[VectorLike] = None) -> Part.BSplineCurve:
     """A cubic C2 B-spline within `tolerance` of every one of the ordered samples.
 
+    The csr-spline of a chosen subset of noise-smoothed samples, then thinned (knots removed)
+    and faired (third-derivative jumps removed) within the tolerance: few poles, no more
+    curvature sign changes than the data supports, few curvature extrema (docs/FAIR_FIT.md).
+
     points: FreeCAD Vectors, tuples, or an (N,2)/(N,3) array; N >= 4, in order along the curve.
     tolerance: the largest distance allowed from any sample to the curve (absolute, in the
         points' units; checked by the kernel before it returns).
