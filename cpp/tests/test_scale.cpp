@@ -14,7 +14,9 @@
 #include <string>
 
 #include "fairsplines/analysis.hpp"
+#include "fairsplines/baselines.hpp"
 #include "fairsplines/basic_curves.hpp"
+#include "fairsplines/csr.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/fair_blend.hpp"
 #include "fairsplines/monotone.hpp"
@@ -164,4 +166,46 @@ TEST(ScaleInvariance, LongBasicCurvesHaveAFiniteSize) {
   const std::string message = refusal([] { parabolaArc(Frame{}, 0.0098, -6.0, 1e160); });
   EXPECT_NE(message.find("the parabola arc"), std::string::npos) << message;
   EXPECT_NE(message.find("too large for double precision"), std::string::npos) << message;
+}
+
+// Points whose squared distances leave double precision (1e160, 1e300, 1e-300) were refused
+// as "points coincide" by the csr-spline and the quadratic design: now they are fitted
+// divided by a power of two and the poles multiplied back, so the curve is the unit one
+// scaled (open and closed, the streaming and the vectorised paths, csrSplineOcct too).
+// Fits that do not rescale name the size instead of a coincidence.
+TEST(ScaleInvariance, CsrAndQuadraticDesignOfHugeAndTinyPointsAreTheUnitOnesScaled) {
+  for (Eigen::Index n : {40, 300}) {  // below and above kVectorisedFrom
+    for (bool closed : {false, true}) {
+      PointMatrix q(n, 3);
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double t = (closed ? 2 * M_PI : 3.0) * static_cast<double>(i) / static_cast<double>(n);
+        q.row(i) << 2 * std::cos(t), std::sin(t), 0.1 * std::sin(3 * t);
+      }
+      CsrOptions o;
+      o.closed = closed;
+      const BSplineCurve unit = csrSpline(q, o);
+      const BSplineCurve unitDesign = quadraticDesign(q, Parametrization::Chordal, closed);
+      for (double s : {1e160, 1e300, 1e-300, -1e200}) {
+        SCOPED_TRACE("n " + std::to_string(n) + (closed ? " closed" : " open") + ", scale " + std::to_string(s));
+        const BSplineCurve c = csrSpline(q * s, o);
+        ASSERT_EQ(c.poles.rows(), unit.poles.rows());
+        EXPECT_LE((c.poles / s - unit.poles).cwiseAbs().maxCoeff(), 1e-12 * unit.poles.cwiseAbs().maxCoeff());
+        const Handle(Geom_BSplineCurve) occ = csrSplineOcct(q * s, o);
+        ASSERT_EQ(occ->NbPoles(), c.poles.rows());
+        for (int i = 1; i <= occ->NbPoles(); ++i) EXPECT_EQ(occ->Pole(i).X(), c.poles(i - 1, 0));
+        const BSplineCurve d = quadraticDesign(q * s, Parametrization::Chordal, closed);
+        ASSERT_EQ(d.poles.rows(), unitDesign.poles.rows());
+        EXPECT_LE((d.poles / s - unitDesign.poles).cwiseAbs().maxCoeff(),
+                  1e-12 * unitDesign.poles.cwiseAbs().maxCoeff());
+      }
+    }
+  }
+  PointMatrix line(5, 2);
+  line << 0, 0, 1, 0.5, 2, 0.25, 3, 1, 4, 0;
+  try {
+    classicInterpolation(line * 1e300, Parametrization::Chordal, false);
+    ADD_FAILURE() << "classic interpolation took points it cannot measure";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("double precision"), std::string::npos) << e.what();
+  }
 }

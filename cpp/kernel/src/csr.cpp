@@ -3,7 +3,6 @@
 // points that pick a strategy. The vectorised strategy is in csr_vectorised.cpp, the
 // quadratic design of Section 7, eq. (12), in quadratic_design.cpp.
 #include "fairsplines/csr.hpp"
-#include "finite.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include "fairsplines/errors.hpp"
 #include "csr_detail.hpp"
 #include "csr_poles.hpp"
+#include "finite.hpp"
 
 namespace fairsplines {
 namespace detail {
@@ -169,7 +169,9 @@ BSplineCurve fitCubic(PointsRef q, Eigen::VectorXd t, bool closed, double size, 
   return curve;
 }
 
-void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles) {
+namespace {
+
+void csrSplineAsGiven(PointsRef q, const CsrOptions& options, double* t, double* poles) {
   const Eigen::Index n = q.rows(), dim = q.cols();
   const bool fused = !options.closed && options.parameters.size() == 0 && validEpsilon(options.epsilon) &&
                      (dim == 2 || dim == 3) && q.outerStride() == dim && n >= kVectorisedFrom;
@@ -201,6 +203,24 @@ void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* po
     return;
   }
   csrOpenFusedInto(q, options, t, poles);
+}
+
+}  // namespace
+
+void csrSplineInto(PointsRef q, const CsrOptions& options, double* t, double* poles) {
+  try {
+    csrSplineAsGiven(q, options, t, poles);
+  } catch (const ExtremeScale& e) {
+    // Scale-free: points whose squared distances leave double precision (1e300, 1e-300) are
+    // fitted divided by a power of two near their largest coordinate (exact: the same digits
+    // as at that size) and the poles multiplied back; the knots are the parameters of the
+    // scaled points (chordal and centripetal ones scale with them) or the given ones.
+    const double scale = powerOfTwoScale(e.largest);
+    const PointMatrix unit = q / scale;
+    csrSplineAsGiven(unit, options, t, poles);
+    const Eigen::Index count = (options.closed ? q.rows() : q.rows() + 2) * q.cols();
+    for (Eigen::Index i = 0; i < count; ++i) poles[i] *= scale;
+  }
 }
 
 }  // namespace detail

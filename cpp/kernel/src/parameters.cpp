@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
@@ -135,6 +136,16 @@ double checkedSize(const double* lo, const double* hi) {
     largest = std::max(largest, std::max(std::abs(lo[c]), std::abs(hi[c])));
   }
   const double size = std::sqrt(squared);
+  double spread = 0.0;
+  for (int c = 0; c < D; ++c) spread = std::max(spread, hi[c] - lo[c]);
+  // Squares that overflow or underflow: the points do not coincide, their size is beyond
+  // what this fit's lengths hold as they are.
+  if (!(size <= std::numeric_limits<double>::max()) || (size <= 1e-300 && spread > 1e-14 * largest)) {
+    std::ostringstream msg;
+    msg << "the points' coordinates reach " << largest << " and spread over " << spread
+        << ": squares of their distances leave double precision; scale them to between 1e-100 and 1e100";
+    throw detail::ExtremeScale(msg.str(), largest);
+  }
   if (size <= 1e-300 || size <= 1e-14 * largest) throw InputError("all points coincide");
   return size;
 }

@@ -51,7 +51,9 @@ PointMatrix quadraticHandles(PointsRef q, const Eigen::VectorXd& t, bool closed,
 
 }  // namespace detail
 
-BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {
+namespace {
+
+BSplineCurve quadraticDesignAsGiven(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {
   const SampleInfo info = validateSamples(q, closed, 3, "the quadratic design");
   if (!detail::validEpsilon(epsilon)) throw InputError(detail::kEpsilonMessage);
   const Eigen::VectorXd t = parameters(info.chords, parametrization);
@@ -74,6 +76,22 @@ BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool 
   curve.mults[0] = curve.mults[t.size() - 1] = 3;
   requireValidCurve(curve, "the quadratic design of these points");
   return curve;
+}
+
+}  // namespace
+
+BSplineCurve quadraticDesign(PointsRef q, Parametrization parametrization, bool closed, double epsilon) {
+  try {
+    return quadraticDesignAsGiven(q, parametrization, closed, epsilon);
+  } catch (const detail::ExtremeScale& e) {
+    // Scale-free, as the csr-spline (csrSplineInto): fitted divided by a power of two, the
+    // poles multiplied back.
+    const double scale = powerOfTwoScale(e.largest);
+    BSplineCurve curve = quadraticDesignAsGiven(q / scale, parametrization, closed, epsilon);
+    curve.poles *= scale;
+    requireValidCurve(curve, "the quadratic design of these points");
+    return curve;
+  }
 }
 
 }  // namespace fairsplines

@@ -1,6 +1,7 @@
 // Parameters t_i for samples q_i: chordal, centripetal, uniform.
 #pragma once
 #include <string>
+#include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
 
 namespace fairsplines {
@@ -35,6 +36,16 @@ Eigen::VectorXd parameters(PointsRef q, Parametrization kind, bool closed);
 Eigen::VectorXd validatedParameters(const Eigen::VectorXd& t, Eigen::Index n, bool closed);
 
 namespace detail {
+
+/// The InputError of validateSamples for points whose size squared overflows or underflows
+/// (largest coordinate about 1e154 or more, or a spread of 1e-300 or less that is not a
+/// coincidence): fits that can rescale catch it and fit the points divided by a power of two
+/// (exact); others pass it on, its message naming the size.
+class ExtremeScale : public InputError {
+public:
+  ExtremeScale(const std::string& what, double largest) : InputError(what), largest(largest) {}
+  double largest;  ///< the largest magnitude of a coordinate
+};
 
 /// validateSamples writing the chords to `chords` (room for one per segment: n - 1, or n
 /// when closed) instead of a new vector. Returns the bounding-box diagonal.
