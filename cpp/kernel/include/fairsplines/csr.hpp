@@ -34,7 +34,9 @@ struct CsrOptions {
 /// q_{n-1}; its end poles are the blossoms F[t_0,t_0,t_0] = q_0 and F[t_0,t_0,t_1] of f_1
 /// (mirrored at the other end). It is C2 throughout, reproduces quadratic data exactly
 /// and adds no turn at the ends that f_1 / f_{n-2} do not have.
-/// Closed data give a periodic curve.
+/// Closed data give a periodic curve. Points whose squared distances leave double precision
+/// (sizes of about 1e154 and more, or 1e-300 and less) are fitted divided by a power of two
+/// and the poles multiplied back: the unit fit, scaled.
 /// Throws InputError for samples validateSamples refuses (fewer than 3 rows, not 2 or 3
 /// columns, a coordinate that is not finite, all points coincident, two consecutive points
 /// (cyclically, when closed) coincident), an epsilon that is not positive and finite, given
@@ -47,6 +49,7 @@ BSplineCurve csrSpline(PointsRef q, const CsrOptions& options = {});
 /// {q_i, m_i, q_{i+1}} with shape handles m_i = mu_{i+1} m_i^L + (1 - mu_{i+1}) m_i^R.
 /// Returned as a degree-2 B-spline with double interior knots at t_i (poles q_0, m_0,
 /// q_1, m_1, ..., q_{n-1}); at the ends of open data the one available handle is used.
+/// Points of extreme size are fitted as by csrSpline (scaled by a power of two and back).
 /// Throws InputError for samples validateSamples refuses (fewer than 3 rows, not 2 or 3
 /// columns, a coordinate that is not finite, all points coincident, two consecutive points
 /// (cyclically, when closed) coincident), an epsilon that is not positive and finite, or a
