@@ -180,7 +180,7 @@ def fair_blend(p0: FloatArray, t0: FloatArray, p1: FloatArray, t1: FloatArray, k
 def fair_fit(points: FloatArray, tolerance: float, closed: bool = False, noise: Optional[float] = None,
              start_tangent: Optional[FloatArray] = None, end_tangent: Optional[FloatArray] = None,
              start_curvature: Optional[FloatArray] = None,
-             end_curvature: Optional[FloatArray] = None) -> dict[str, object]: ...
+             end_curvature: Optional[FloatArray] = None, corners: str = "refuse") -> dict[str, object]: ...
 
 # ---- basic shapes and their blends (blending paper, Sections 2-5)
 

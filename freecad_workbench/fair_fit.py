@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Optional, Tuple
+from typing import TYPE_CHECKING, Optional, Tuple, Union
 
 import numpy as np
 
@@ -27,6 +27,7 @@ if TYPE_CHECKING:
     import Part
 
 CLAMPS = ("G0", "G1", "G2")
+CORNERS = ("refuse", "keep", "smooth")
 
 
 @dataclass(frozen=True)
@@ -40,6 +41,12 @@ class FairFitReport:
     curvature_extrema: int  #: interior curvature maxima and minima of the curve
     noise: float  #: the noise used: given, or estimated (standard deviation per coordinate)
     iterations: int  #: refinement passes
+    merged_points: int = 0  #: input points merged into a coincident neighbour (repeated or 1e-9 of the size apart)
+    closed: bool = False  #: fitted as closed data (asked for, or recognised)
+    recognised_closed: bool = False  #: open data whose last point repeats the first, fitted as closed
+    corners: Tuple[int, ...] = ()  #: the input points found to be sharp corners (numbered from 0)
+    pinned: int = 0  #: samples the curve was made to pass through where the csr-spline relaxes (FAIR_FIT.md, step 8)
+    pieces: int = 1  #: curves returned (corners="keep": one per stretch between corners)
 
     def status(self, unit: str = "mm") -> str:
         """The one-line summary a feature shows, e.g. "ok: 42 poles, largest deviation 0.0093 mm, 0 curvature
@@ -60,7 +67,9 @@ def _direction(value, name, dim):
     return np.ascontiguousarray(v)
 
 
-def _call(points, tolerance, closed, noise, start_tangent, end_tangent, start_curvature=None, end_curvature=None):
+def _call(points, tolerance, closed, noise, start_tangent, end_tangent, start_curvature=None, end_curvature=None,
+          corners="refuse"):
+    as_choice(corners, "corners", CORNERS)
     q = as_points(points)
     tol = as_real(tolerance, "tolerance", positive=True)
     sigma = None if noise is None else as_real(noise, "noise", minimum=0)
@@ -68,29 +77,42 @@ def _call(points, tolerance, closed, noise, start_tangent, end_tangent, start_cu
     result = kernel.fair_fit(q, tol, as_flag(closed, "closed"), sigma, _direction(start_tangent, "start_tangent", dim),
                              _direction(end_tangent, "end_tangent", dim),
                              _direction(start_curvature, "start_curvature", dim),
-                             _direction(end_curvature, "end_curvature", dim))
+                             _direction(end_curvature, "end_curvature", dim), corners)
     c = result["curve"]
+    pieces = result["pieces"] or [c]
     report = FairFitReport(
-        poles=int(c.poles.shape[0]),
+        poles=int(sum(p.poles.shape[0] for p in pieces)),
         max_deviation=float(result["max_deviation"]),
         sign_changes=int(result["sign_changes"]),
         data_sign_changes=int(result["data_sign_changes"]),
         curvature_extrema=int(result["curvature_extrema"]),
         noise=float(result["noise"]),
         iterations=int(result["iterations"]),
+        merged_points=int(result["merged_points"]),
+        closed=bool(result["closed"]),
+        recognised_closed=bool(result["recognised_closed"]),
+        corners=tuple(int(i) for i in result["corners"]),
+        pinned=int(result["pinned"]),
+        pieces=len(pieces),
     )
+    if corners == "keep":
+        import Part
+
+        return Part.Wire([to_part(p).toShape() for p in pieces]), report
     return to_part(c), report
 
 
 def fair_fit_report(points: PointsLike, tolerance: float, closed: bool = False, noise: Optional[float] = None,
-                    start_tangent: Optional[VectorLike] = None,
-                    end_tangent: Optional[VectorLike] = None) -> Tuple[Part.BSplineCurve, FairFitReport]:
-    """fair_fit and its report (poles, largest deviation, curvature sign changes, ...)."""
-    return _call(points, tolerance, closed, noise, start_tangent, end_tangent)
+                    start_tangent: Optional[VectorLike] = None, end_tangent: Optional[VectorLike] = None,
+                    corners: str = "refuse") -> Tuple[Union[Part.BSplineCurve, Part.Wire], FairFitReport]:
+    """fair_fit and its report (poles, largest deviation, curvature sign changes, merged
+    points, corners, ...)."""
+    return _call(points, tolerance, closed, noise, start_tangent, end_tangent, corners=corners)
 
 
 def fair_fit(points: PointsLike, tolerance: float, closed: bool = False, noise: Optional[float] = None,
-             start_tangent: Optional[VectorLike] = None, end_tangent: Optional[VectorLike] = None) -> Part.BSplineCurve:
+             start_tangent: Optional[VectorLike] = None, end_tangent: Optional[VectorLike] = None,
+             corners: str = "refuse") -> Union[Part.BSplineCurve, Part.Wire]:
     """A cubic C2 B-spline within `tolerance` of every one of the ordered samples.
 
     The csr-spline of a chosen subset of noise-smoothed samples, then thinned (knots removed)
@@ -100,14 +122,23 @@ def fair_fit(points: PointsLike, tolerance: float, closed: bool = False, noise: 
     points: FreeCAD Vectors, tuples, or an (N,2)/(N,3) array; N >= 4, in order along the curve.
     tolerance: the largest distance allowed from any sample to the curve (absolute, in the
         points' units; checked by the kernel before it returns).
-    closed: a periodic curve through closed data (do not repeat the first point).
+    closed: a periodic curve through closed data. Open data whose last point repeats the
+        first are recognised as closed; repeated and near-coincident points are merged.
     noise: the samples' scatter (standard deviation per coordinate, absolute); None:
         estimated from the residuals of local quadratic fits; 0: noise-free data.
     start_tangent, end_tangent: open data only: directions (any length) the curve leaves the
         first and arrives at the last sample with. The end points of open data are interpolated.
-    Raises InputError on bad input, and when the tolerance cannot be met (below about 3 times the noise).
+    corners: sharp corners of the data (a turn at one point, an airfoil's trailing edge):
+        "refuse" (InputError naming the point), "keep" (returns a Part.Wire with one edge per
+        stretch between corners, meeting at the corners), "smooth" (one smooth curve through
+        them; the report names them). Closed data with a single corner give one curve from the
+        corner round to it under every choice.
+    Where the csr-spline relaxes beyond the tolerance (sharp noses, hairpins) the curve is made
+    to pass through the samples there, so every tolerance above the noise is met.
+    Raises InputError on bad input, points out of order (naming them), corners (above), and a
+    work budget exhausted.
     """
-    return _call(points, tolerance, closed, noise, start_tangent, end_tangent)[0]
+    return _call(points, tolerance, closed, noise, start_tangent, end_tangent, corners=corners)[0]
 
 
 def _bspline_of(edge_or_curve: CurveLike) -> Part.BSplineCurve:

@@ -50,14 +50,17 @@ def ellipse(n, a=2.0, b=1.0, closed=False):
     return np.c_[a * np.cos(t), b * np.sin(t)]
 
 
-def naca4(digits="2412", n=101):
-    """A NACA 4-digit airfoil of chord 1 from its analytic formula (closed trailing edge,
-    cosine spacing): from the trailing edge over the upper surface to the leading edge and
-    back along the lower one (2 n - 1 points, open)."""
+def naca4(digits="2412", n=101, blunt=False):
+    """A NACA 4-digit airfoil of chord 1 from its analytic formula (cosine spacing), as a
+    Selig coordinate file lists it: from the trailing edge over the upper surface to the
+    leading edge and back along the lower one (2 n - 1 points). Sharp trailing edge (the
+    last coefficient -0.1036: the first and last points coincide) or blunt (-0.1015, the
+    original formula: a gap of about 0.25 % of the chord)."""
     m, p, t = int(digits[0]) / 100, int(digits[1]) / 10, int(digits[2:]) / 100
     beta = np.linspace(0, math.pi, n)
     x = (1 - np.cos(beta)) / 2
-    yt = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x ** 2 + 0.2843 * x ** 3 - 0.1036 * x ** 4)
+    a4 = -0.1015 if blunt else -0.1036
+    yt = 5 * t * (0.2969 * np.sqrt(x) - 0.1260 * x - 0.3516 * x ** 2 + 0.2843 * x ** 3 + a4 * x ** 4)
     if m == 0:  # symmetric: no camber
         yc = dyc = np.zeros_like(x)
     else:
@@ -67,6 +70,38 @@ def naca4(digits="2412", n=101):
     upper = np.c_[x - yt * np.sin(th), yc + yt * np.cos(th)]
     lower = np.c_[x + yt * np.sin(th), yc - yt * np.cos(th)]
     return np.vstack([upper[::-1], lower[1:]])
+
+
+def hairpin_road(seed=0, spacing=10.0, noise=0.05):
+    """A road alignment of lines, clothoids and arcs with two hairpins (turns of 160-175 deg
+    on radii of 7-10 m, under 3 sample spacings of 10 m) and a reverse curve between, sampled
+    every `spacing` metres along it with Gaussian noise of standard deviation `noise` per
+    coordinate (5 cm, a survey's). Returns (points, true curvature sign changes): the plan's
+    curvature is piecewise linear in arc length (clothoids), so its signs are exact."""
+    rng = np.random.default_rng(seed)
+    r1, r2 = rng.uniform(7.0, 10.0, 2)
+    sweep1, sweep2 = np.radians(rng.uniform(160.0, 175.0, 2))
+    L = rng.uniform(25.0, 40.0)  # clothoid lengths around the gentle arcs
+    r3, r4 = rng.uniform(80.0, 150.0, 2)
+    # (length, curvature at start, curvature at end): lines, clothoids, arcs.
+    plan = [(120.0, 0, 0), (8.0, 0, 1 / r1), (sweep1 * r1 - 8.0, 1 / r1, 1 / r1), (8.0, 1 / r1, 0),
+            (150.0, 0, 0), (L, 0, -1 / r3), (60.0, -1 / r3, -1 / r3), (L, -1 / r3, 0), (40.0, 0, 0),
+            (L, 0, 1 / r4), (50.0, 1 / r4, 1 / r4), (L, 1 / r4, 0), (130.0, 0, 0), (8.0, 0, -1 / r2),
+            (sweep2 * r2 - 8.0, -1 / r2, -1 / r2), (8.0, -1 / r2, 0), (120.0, 0, 0)]
+    ds = 0.01
+    k = np.concatenate([np.linspace(k0, k1, max(2, int(round(length / ds))), endpoint=False)
+                        for length, k0, k1 in plan])
+    lengths = np.concatenate([np.full(max(2, int(round(length / ds))), length / max(2, int(round(length / ds))))
+                              for length, _, _ in plan])
+    heading = np.concatenate([[0.0], np.cumsum(k * lengths)])[:-1] + 0.5 * k * lengths
+    xy = np.vstack([[0.0, 0.0], np.cumsum(np.c_[np.cos(heading), np.sin(heading)] * lengths[:, None], axis=0)])
+    s = np.r_[0.0, np.cumsum(lengths)]
+    st = np.arange(0.0, s[-1], spacing)
+    pts = np.c_[np.interp(st, s, xy[:, 0]), np.interp(st, s, xy[:, 1])]
+    pts = pts + rng.normal(0.0, noise, pts.shape)
+    signs = [np.sign(k0 + k1) for _, k0, k1 in plan if k0 + k1 != 0]
+    true_changes = int(sum(a != b for a, b in zip(signs[:-1], signs[1:])))
+    return pts, true_changes
 
 
 def helix(n, noise=0.0, seed=3, turns=1.5):

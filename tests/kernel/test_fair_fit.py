@@ -165,7 +165,8 @@ def test_end_tangents_change_the_curve():
 @pytest.mark.parametrize("points,kwargs,words", [
     ([(0, 0), (1, 0), (2, float("nan")), (3, 1)], {}, "finite"),
     ([(0, 0), (1, 0), (2, 1)], {}, "at least"),
-    ([(0, 0), (1, 0), (1, 0), (2, 1), (3, 3)], {}, "coincide"),
+    ([(1, 0), (1, 0), (1, 0), (1, 0), (1, 0)], {}, "coincide"),
+    ([(0, 0), (1, 0), (1, 0), (1, 0), (2, 1)], {}, "3 distinct"),
     ([(0, 0), (1, 0), (2, 1), (3, 3)], {"tolerance": 0.0}, "tolerance"),
     ([(0, 0), (1, 0), (2, 1), (3, 3)], {"tolerance": -1.0}, "tolerance"),
     ([(0, 0), (1, 0), (2, 1), (3, 3)], {"tolerance": float("inf")}, "tolerance"),

@@ -34,6 +34,7 @@ using namespace detail::fairfit;  // the fit's own internals (fair_fit_detail.hp
 struct Subset {
   std::vector<Index> index;  // sample indices, increasing
   std::vector<char> raw;     // use q_i itself (ends of open data; where smoothing fails)
+  std::vector<char> pinned;  // the curve passes through q_i at its knot (step 8's fall-back)
 };
 
 class FairFitter {
@@ -143,6 +144,7 @@ public:
           Subset fewer = sub;
           fewer.index.erase(fewer.index.begin() + j);
           fewer.raw.erase(fewer.raw.begin() + j);
+          fewer.pinned.erase(fewer.pinned.begin() + j);
           const BSplineCurve candidate = build(fewer);
           std::vector<double> dev;
           std::vector<Foot> cFeet;
@@ -169,6 +171,7 @@ public:
     result.maxDeviation = maxDev;
     result.signChanges = changes;
     result.curvatureExtrema = extrema;
+    result.pinned = static_cast<int>(std::count(sub.pinned.begin(), sub.pinned.end(), 1));
     return result;
   }
 
@@ -208,6 +211,7 @@ private:
       if (sub.index.empty() || sub.index.back() != i) sub.index.push_back(i);
     }
     sub.raw.assign(sub.index.size(), 0);
+    sub.pinned.assign(sub.index.size(), 0);
     if (!S_.closed) sub.raw.front() = sub.raw.back() = 1;  // the end points are interpolated
     return sub;
   }
@@ -225,16 +229,17 @@ private:
     }
     if (extra.empty()) return false;
     Subset next;
-    std::vector<std::pair<Index, char>> all;
-    for (std::size_t j = 0; j < sub.index.size(); ++j) all.push_back({sub.index[j], sub.raw[j]});
-    for (Index i : extra) all.push_back({i, 0});
+    std::vector<std::array<Index, 3>> all;  // sample, raw, pinned
+    for (std::size_t j = 0; j < sub.index.size(); ++j) all.push_back({sub.index[j], sub.raw[j], sub.pinned[j]});
+    for (Index i : extra) all.push_back({i, 0, 0});
     std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
-      return a.first < b.first || (a.first == b.first && a.second > b.second);
+      return a[0] < b[0] || (a[0] == b[0] && a[1] + a[2] > b[1] + b[2]);
     });
-    for (const auto& [i, raw] : all) {
-      if (!next.index.empty() && next.index.back() == i) continue;  // keeps the raw flag of the first (raw first)
+    for (const auto& [i, raw, pinned] : all) {
+      if (!next.index.empty() && next.index.back() == i) continue;  // keeps the flags of the first (flagged first)
       next.index.push_back(i);
-      next.raw.push_back(raw);
+      next.raw.push_back(static_cast<char>(raw));
+      next.pinned.push_back(static_cast<char>(pinned));
     }
     if (next.index.size() == sub.index.size()) return false;
     sub = std::move(next);
@@ -278,7 +283,36 @@ private:
     co.closed = S_.closed;
     BSplineCurve curve = csrSpline(Q, co);
     if (!S_.closed) endConditions(curve);
+    pin(curve, sub);
     return curve;
+  }
+
+  /// Step 8's fall-back: where even the csr-spline of neighbouring samples stays beyond the
+  /// tolerance (it relaxes away from samples of high curvature, eq. (6)), the curve is made
+  /// to pass through them at their knots (pinAtKnots), the end conditions' poles kept.
+  void pin(BSplineCurve& curve, const Subset& sub) const {
+    const Index m = static_cast<Index>(sub.index.size());
+    std::vector<std::pair<Index, Vector3d>> pins;
+    for (Index j = 0; j < m; ++j) {
+      if (!sub.pinned[j] || (!S_.closed && (j == 0 || j == m - 1))) continue;  // open ends: interpolated already
+      pins.push_back({j, S_.p[sub.index[j]]});
+    }
+    if (pins.empty()) return;
+    SplineSpace space{std::vector<double>(curve.knots.data(), curve.knots.data() + curve.knots.size()), S_.closed};
+    Eigen::MatrixX3d P = polesOf(curve);
+    if (!pinAtKnots(space, P, pins, fixedPoles(P.rows()))) return;
+    setPoles(curve, P);
+  }
+
+  /// The poles an open curve's end conditions set: P_0 (the end point), P_1 with a tangent,
+  /// P_2 with a curvature (mirrored at the end); none when closed.
+  std::vector<char> fixedPoles(Index np) const {
+    std::vector<char> fixed(np, 0);
+    if (S_.closed) return fixed;
+    const Index a = startK_ ? 3 : startT_ ? 2 : 1, b = endK_ ? 3 : endT_ ? 2 : 1;
+    for (Index i = 0; i < a && i < np; ++i) fixed[i] = 1;
+    for (Index i = 0; i < b && i < np; ++i) fixed[np - 1 - i] = 1;
+    return fixed;
   }
 
   /// Open ends: pole 1 on the given tangent (the leg length kept), pole 2 moved across it
@@ -363,9 +397,11 @@ private:
     bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
     Thinning th = bounds;
-    th.feet = std::move(feet);  // given back as they were when no knot is removed
+    std::vector<Foot> fitFeet = feet;  // the fit's, should the thinned curve not be taken
+    th.feet = std::move(feet);         // given back as they were when no knot is removed
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const Handle(Geom_BSplineCurve) thinned = removeKnots(occ, th);
+    if (thinned == occ) th.feet = std::move(fitFeet);
     if (thinned != occ) {
       BSplineCurve c = fromOcct(thinned);
       c.poles = c.poles.leftCols(dim_).eval();
@@ -376,12 +412,72 @@ private:
         extrema = static_cast<int>(curvatureExtrema(profile).size());
         bounds.at = std::move(th.at);
       } else {
-        th.feet.clear();  // on the thinned curve, not this one: fairing projects the samples itself
+        th.feet = std::move(fitFeet);  // the thinned curve's were on a curve not taken
       }
     }
+    fairConstrained(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
     Fairing f{bounds};
     f.feet = std::move(th.feet);
     fair(curve, f, maxDev, changes, extrema, profile);
+  }
+
+  /// Fairing under the tolerance (fair_fit_constrained.cpp): the poles move towards the least
+  /// third-derivative jump energy while every sample stays within the tolerance at its foot.
+  /// Verified over every sample (projected again from its foot on the new curve); taken when
+  /// it has no more curvature sign changes and no more extrema. `feet` (at sample index -
+  /// at0) become the new curve's when taken.
+  void fairConstrained(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes,
+                       int& extrema, CurvatureProfile& profile) const {
+    ConstrainedFairing cf;
+    cf.tolerance = o_.tolerance;
+    cf.q = &S_.p;
+    cf.fixed = fixedPoles(curve.poles.rows());
+
+    cf.sample.reserve(feet.size());
+    cf.feet.reserve(feet.size());
+    for (std::size_t k = 0; k < feet.size(); ++k) {
+      if (!(feet[k].d <= o_.tolerance)) continue;  // not measured: checked below with the rest
+      cf.sample.push_back(S_.wrap(at0 + static_cast<Index>(k)));
+      cf.feet.push_back(feet[k]);
+    }
+    if (cf.feet.size() != feet.size()) return;
+    const SplineSpace space{std::vector<double>(curve.knots.data(), curve.knots.data() + curve.knots.size()),
+                            S_.closed};
+    // Outer passes: the constraints hold each sample at its foot's parameter, so a pass may
+    // not slide the curve along itself; the samples are projected again (their new feet) and
+    // the next pass starts from there, while the energy still drops by 1 %.
+    const int passes = cf.feet.size() > 100000 ? 1 : 4;
+    BSplineCurve best = curve;
+    std::vector<Foot> bestFeet;
+    double bestDev = maxDev, lastEnergy = HUGE_VAL;
+    for (int pass = 0; pass < passes; ++pass) {
+      Eigen::MatrixX3d P = polesOf(best);
+      fairUnderTolerance(space, P, cf);
+      if (!(cf.energyAfter < cf.energyBefore) || !P.allFinite()) break;
+      BSplineCurve faired = best;
+      setPoles(faired, P);
+      const Handle(Geom_BSplineCurve) occ = toOcct(faired);
+      const SpanPolys SP = spanPolys(faired, occ);
+      std::vector<Foot> moved(cf.feet.size());
+      double d = 0.0;
+      for (std::size_t k = 0; k < cf.feet.size(); ++k) {
+        moved[k] = projectFoot(SP, S_.p[cf.sample[k]], cf.feet[k].span, cf.feet[k].x);
+        d = std::max(d, moved[k].d);
+      }
+      if (!(d <= o_.tolerance)) break;
+      best = std::move(faired), bestDev = d, cf.feet = moved, bestFeet = std::move(moved);
+      const bool converged = cf.energyAfter > 0.99 * std::min(lastEnergy, cf.energyBefore);
+      lastEnergy = cf.energyAfter;
+      if (converged) break;
+    }
+    if (bestFeet.empty()) return;
+    const SpanPolys SP = spanPolys(best, toOcct(best));
+    CurvatureProfile fProfile = spanProfile(SP, normal_, 16);
+    const int fChanges = curvatureSignChanges(fProfile);
+    const int fExtrema = static_cast<int>(curvatureExtrema(fProfile).size());
+    if (fChanges > changes || fExtrema > extrema) return;
+    curve = std::move(best), maxDev = bestDev, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
+    feet = std::move(bestFeet);
   }
 
   /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is
@@ -420,18 +516,31 @@ private:
   /// samples fall back to the samples themselves, and past that the tolerance is out of reach.
   void refine(Subset& sub, const std::vector<double>& dev) const {
     const Index m = static_cast<Index>(sub.index.size());
+    const std::vector<char> built = sub.pinned;  // the pins the curve was built with
     Subset next;
     for (Index j = 0; j < m; ++j) {
       next.index.push_back(sub.index[j]);
       next.raw.push_back(sub.raw[j]);
+      next.pinned.push_back(sub.pinned[j]);
       if (j >= static_cast<Index>(dev.size()) || dev[j] <= o_.tolerance) continue;
       const Index a = sub.index[j], b = j + 1 < m ? sub.index[j + 1] : sub.index[0] + S_.n;
       if (b - a >= 2) {
         next.index.push_back(S_.wrap((a + b) / 2));
         next.raw.push_back(0);
+        next.pinned.push_back(0);
         continue;
       }
       const Index jn = (j + 1) % m;
+      if (sub.raw[j] && sub.raw[jn] && !(built[j] && built[jn])) {
+        // The csr-spline of the samples themselves relaxes beyond the tolerance here: the
+        // curve is pinned to both (it then passes through them; step 8's fall-back).
+        next.pinned.back() = 1;
+        if (jn == 0)
+          next.pinned.front() = 1;
+        else
+          sub.pinned[jn] = 1;
+        continue;
+      }
       if (sub.raw[j] && sub.raw[jn]) {
         std::ostringstream msg;
         msg << "the fair fit cannot keep within the tolerance " << o_.tolerance << " near sample " << a
@@ -450,8 +559,10 @@ private:
     if (S_.closed && next.index.size() > 1 && next.index.back() < next.index[next.index.size() - 2]) {
       next.index.insert(next.index.begin(), next.index.back());
       next.raw.insert(next.raw.begin(), next.raw.back());
+      next.pinned.insert(next.pinned.begin(), next.pinned.back());
       next.index.pop_back();
       next.raw.pop_back();
+      next.pinned.pop_back();
     }
     sub = std::move(next);
   }
@@ -499,6 +610,100 @@ private:
   DataShape shape_;
 };
 
+// ---------------------------------------------------------------------------------------
+// Real input: merged points, closed data, corners (fair_fit_input.cpp; docs/FAIR_FIT.md, step 1)
+
+/// The points of one stretch between corners (rows a .. b of q, b past the end wrapping round
+/// closed data), with midpoints added between the widest neighbours up to 4 points.
+PointMatrix stretch(const PointMatrix& q, Index a, Index b) {
+  const Index n = q.rows();
+  std::vector<Eigen::RowVectorXd> rows;
+  for (Index i = a; i <= b; ++i) rows.push_back(q.row(i % n));
+  while (rows.size() < 4) {
+    std::size_t widest = 0;
+    for (std::size_t i = 1; i + 1 < rows.size(); ++i)
+      if ((rows[i + 1] - rows[i]).norm() > (rows[widest + 1] - rows[widest]).norm()) widest = i;
+    rows.insert(rows.begin() + static_cast<std::ptrdiff_t>(widest) + 1, 0.5 * (rows[widest] + rows[widest + 1]));
+  }
+  PointMatrix out(static_cast<Index>(rows.size()), q.cols());
+  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Index>(i)) = rows[i];
+  return out;
+}
+
+/// The fit of the input as given (units already scaled): coincident neighbours merged,
+/// closed data recognised, the order checked, corners refused, kept or smoothed over.
+FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
+  const bool ends = options.startTangent || options.endTangent || options.startCurvature || options.endCurvature;
+  MergedInput M = mergeCoincident(q, options.closed, options.tolerance);
+  if (M.recognisedClosed && ends) {  // end conditions ask for open data: the repeat stays an end
+    M = mergeCoincident(q, options.closed, options.tolerance);
+    M.q.conservativeResize(M.q.rows() + 1, Eigen::NoChange);
+    M.q.row(M.q.rows() - 1) = q.row(q.rows() - 1);
+    M.origin.push_back(q.rows() - 1);
+    M.merged -= 1, M.closed = false, M.recognisedClosed = false;
+  }
+  FairFitOptions o = options;
+  o.closed = M.closed;
+  o.tolerance = options.tolerance - M.offset;  // a dropped point is within offset of the one kept
+  const Samples S = readSamples(M.q, M.closed);
+  const double sigma = options.noise ? *options.noise : estimateNoise(S, q.cols() == 2);
+  if (o.tolerance < sigma) {
+    // A curve that close to every sample follows the noise: the fit would be met (step 8
+    // pins it) but not fair. About 3 times the noise is the least a smooth curve keeps.
+    std::ostringstream msg;
+    msg << "the tolerance " << options.tolerance << " is below the noise of the points (" << sigma
+        << (options.noise ? ", as given" : ", estimated") << "): a curve that close follows the noise. A tolerance of "
+        << 3.0 * sigma << " (3 times the noise) or more can be met";
+    throw InputError(msg.str());
+  }
+  const std::vector<Index> corners = findCorners(S, sigma, M.origin);
+  auto finish = [&](FairFitResult r) {
+    r.mergedPoints = M.merged;
+    r.closed = M.closed;
+    r.recognisedClosed = M.recognisedClosed;
+    for (Index c : corners) r.corners.push_back(M.origin[c]);
+    if (M.merged > 0) r.maxDeviation += M.offset;
+    return r;
+  };
+  using Corners = FairFitOptions::Corners;
+  if (corners.empty() || options.corners == Corners::Smooth) return finish(FairFitter(M.q, o).run());
+  if (options.corners == Corners::Refuse && !(M.closed && corners.size() == 1)) {
+    std::ostringstream msg;
+    msg << "the points have a sharp corner at point " << M.origin[corners.front()];
+    if (corners.size() > 1) msg << " (and " << corners.size() - 1 << " more)";
+    msg << " (numbered from 0): a smooth curve would round it off. corners='keep' fits each stretch between "
+           "corners on its own, corners='smooth' fits one smooth curve through them";
+    throw InputError(msg.str());
+  }
+  // Keep: the stretches between corners (closed data: round from the first corner to it).
+  std::vector<std::pair<Index, Index>> spans;
+  const Index n = M.q.rows();
+  if (M.closed) {
+    for (std::size_t c = 0; c < corners.size(); ++c)
+      spans.push_back({corners[c], c + 1 < corners.size() ? corners[c + 1] : corners.front() + n});
+  } else {
+    Index a = 0;
+    for (Index c : corners) spans.push_back({a, c}), a = c;
+    spans.push_back({a, n - 1});
+  }
+  FairFitResult all;
+  all.noise = sigma;
+  for (std::size_t p = 0; p < spans.size(); ++p) {
+    FairFitOptions op = o;
+    op.closed = false;
+    op.noise = sigma;
+    if (p > 0) op.startTangent.reset(), op.startCurvature.reset();
+    if (p + 1 < spans.size()) op.endTangent.reset(), op.endCurvature.reset();
+    const FairFitResult r = FairFitter(stretch(M.q, spans[p].first, spans[p].second), op).run();
+    all.pieces.push_back(r.curve);
+    all.maxDeviation = std::max(all.maxDeviation, r.maxDeviation);
+    all.signChanges += r.signChanges, all.dataSignChanges += r.dataSignChanges;
+    all.curvatureExtrema += r.curvatureExtrema, all.iterations += r.iterations, all.pinned += r.pinned;
+  }
+  all.curve = all.pieces.front();
+  return finish(std::move(all));
+}
+
 }  // namespace
 
 FairFitResult fairFitReport(PointsRef q, const FairFitOptions& options) {
@@ -513,7 +718,8 @@ FairFitResult fairFitReport(PointsRef q, const FairFitOptions& options) {
     for (Eigen::Index c = 0; c < q.cols(); ++c)
       if (std::isfinite(q(i, c))) largest = std::max(largest, std::abs(q(i, c)));
   if (!(largest > 1e100 || (largest > 0.0 && largest < 1e-100)) || (q.cols() != 2 && q.cols() != 3)) {
-    return FairFitter(q, options).run();
+    FairFitter::readOptions(options, q.cols());
+    return fitInput(q, options);
   }
   FairFitter::readOptions(options, q.cols());
   const double scale = powerOfTwoScale(largest);
@@ -524,11 +730,13 @@ FairFitResult fairFitReport(PointsRef q, const FairFitOptions& options) {
   if (o.startCurvature) *o.startCurvature *= scale;
   if (o.endCurvature) *o.endCurvature *= scale;
   const PointMatrix unit = q / scale;
-  FairFitResult r = FairFitter(unit, o).run();
+  FairFitResult r = fitInput(unit, o);
   r.curve.poles *= scale;  // the knots stay those of size 1: parameters OCCT's tolerances suit
+  for (BSplineCurve& piece : r.pieces) piece.poles *= scale;
   r.maxDeviation *= scale;
   r.noise *= scale;
   requireValidCurve(r.curve, "the fair fit of these points");
+  for (const BSplineCurve& piece : r.pieces) requireValidCurve(piece, "the fair fit of these points");
   return r;
 }
 

@@ -35,6 +35,36 @@ struct Samples {
 Samples readSamples(PointsRef q, bool closed);
 
 // ---------------------------------------------------------------------------------------
+// Real input (fair_fit_input.cpp): coincident points merged, closed data recognised, the
+// order along the curve checked, corners found
+
+/// The samples as the fit takes them: runs of consecutive points within `mergeDistance` of
+/// the run's first point are that one point (cyclically when closed); data whose last point
+/// repeats the first (within it) are closed.
+struct MergedInput {
+  PointMatrix q;
+  std::vector<Index> origin;  // the input row of each kept sample
+  Index merged = 0;           // input points dropped
+  double offset = 0.0;        // the largest distance from a dropped point to the one kept
+  bool closed = false;
+  bool recognisedClosed = false;  // open data whose last point repeats the first
+};
+
+/// Merge coincident and near-coincident neighbours: the merge distance is 1e-3 of the
+/// tolerance, at most 1e-9 of the data's size, at least 2e-12 of it (what validateSamples
+/// calls coincident). Throws as validateSamples for rows, columns and non-finite values.
+MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance);
+
+/// Where the data turn sharply at one sample: a corner (a tangent discontinuity: the
+/// trailing edge of an airfoil, the corner of a profile). Samples i whose turn, the angle
+/// between the chords into and out of it at a stride where chords are at least 20 noise
+/// deviations long, is at least 30 degrees and at least 5 times the turns at both its
+/// stride neighbours. Throws InputError naming the samples (in the input's numbering,
+/// `origin`) where the data run back along themselves: two consecutive turns beyond 135
+/// degrees, as a pair of points out of order makes.
+std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector<Index>& origin);
+
+// ---------------------------------------------------------------------------------------
 // Local least-squares quadratics: the noise-smoothed estimate, curvature and noise residual
 
 struct LocalFit {
@@ -186,5 +216,67 @@ using Thinning = Polishing;
 /// given) or the final check over all samples failed (then `t.at` is as given and `t.feet`
 /// is empty).
 Handle(Geom_BSplineCurve) removeKnots(const Handle(Geom_BSplineCurve)& occ, Thinning& t);
+
+
+// ---------------------------------------------------------------------------------------
+// The tolerance as a constraint (fair_fit_constrained.cpp): interpolation pins where the
+// csr-spline relaxes beyond the tolerance, and fairing under the tolerance constraints
+
+/// The cubic spline space of a fit: simple knots t_0 .. t_m, clamped (m + 3 poles; span j
+/// depends on poles j .. j + 3) or periodic (m poles; span j on poles j .. j + 3 modulo m),
+/// OCCT's numbering as in spanPoly.
+struct SplineSpace {
+  std::vector<double> t;
+  bool periodic = false;
+  Index spans() const { return static_cast<Index>(t.size()) - 1; }
+  Index poles() const { return periodic ? spans() : spans() + 3; }
+  /// Knot i of the span's six-knot window, continued past the ends (clamped: repeated;
+  /// periodic: by the period).
+  double knot(Index i) const;
+  /// The index of the r-th pole of span j (r = 0 .. 3).
+  Index pole(Index j, int r) const { return periodic ? (j + r) % spans() : j + r; }
+  /// The values of the four B-splines of span j at t_j + x (Cox-de Boor; The NURBS Book, A2.2).
+  std::array<double, 4> basis(Index j, double x) const;
+  /// The second derivative at the start and at the end of span j (it is linear there) as
+  /// weights of the span's four poles.
+  std::array<std::array<double, 4>, 2> secondDerivative(Index j) const;
+  /// The third derivative on span j (a constant) as weights of its four poles (de Boor's
+  /// derivative poles, as spanPoly).
+  std::array<double, 4> thirdDerivative(Index j) const;
+};
+
+/// Poles as an (poles x 3) matrix, and back into `curve` (dim columns kept).
+Eigen::MatrixX3d polesOf(const BSplineCurve& curve);
+void setPoles(BSplineCurve& curve, const Eigen::MatrixX3d& P);
+
+/// Step 8's fall-back where the csr-spline of the samples themselves stays beyond the
+/// tolerance: the poles move by the smoothest change (least third-derivative jump energy,
+/// see fairUnderTolerance) that puts the curve through each pin's point at its knot,
+/// C(t_j) = Q_j, the poles marked `fixed` kept. Pins at distinct knots: the constraint rows
+/// have full rank (Schoenberg-Whitney: every site a knot, fewer sites than poles). Returns
+/// false when the system is singular (the poles are then unchanged).
+bool pinAtKnots(const SplineSpace& S, Eigen::MatrixX3d& P, const std::vector<std::pair<Index, Vector3d>>& pins,
+                const std::vector<char>& fixed);
+
+/// Fairing under the tolerance (step 10): the poles P of a curve whose samples q_i lie within
+/// `tolerance` of their curve points C(u_i) (feet) are moved towards the minimum of the
+/// third-derivative jump energy E(P) = sum_k |C'''(t_k+) - C'''(t_k-)|^2 / hbar_k subject to
+/// |C(u_i) - q_i| <= tolerance for every sample. Penalty rounds: the minimum of E + sum_i
+/// lambda_i |C(u_i) - q_i|^2 is taken as far towards as every constraint allows (they are
+/// convex in P, so the segment from a feasible P stays feasible up to the first one met),
+/// and lambda_i grows where that minimum leaves the tolerance. Every round keeps every
+/// sample within the tolerance at its own foot, so the result does too (an upper bound of
+/// its distance). Returns the energy before and after.
+struct ConstrainedFairing {
+  double tolerance = 0.0;
+  const std::vector<Vector3d>* q = nullptr;  // the samples
+  std::vector<Index> sample;                 // per foot: its sample index
+  std::vector<Foot> feet;                    // span and parameter of each constrained point
+  std::vector<char> fixed;                   // per pole
+  int rounds = 200;  // ADMM iterations at most
+  double energyBefore = 0.0, energyAfter = 0.0;
+  int roundsUsed = 0;
+};
+void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFairing& f);
 
 }  // namespace fairsplines::detail::fairfit

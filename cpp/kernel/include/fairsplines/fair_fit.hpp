@@ -5,6 +5,7 @@
 // The method, what is guaranteed and what is heuristic: docs/FAIR_FIT.md.
 #pragma once
 #include <optional>
+#include <vector>
 
 #include "fairsplines/types.hpp"
 
@@ -32,6 +33,13 @@ struct FairFitOptions {
   /// curvature extrema; docs/FAIR_FIT.md, step 10). false gives the csr-spline of the subset
   /// as it is.
   bool fairing = true;
+  /// Sharp corners of the data (a turn concentrated at one sample, such as an airfoil's
+  /// trailing edge; docs/FAIR_FIT.md, step 1): Refuse throws InputError naming them; Keep
+  /// fits each stretch between corners on its own (the pieces meet at the corners); Smooth
+  /// fits one smooth curve through them and reports them. Closed data with one corner are
+  /// fitted from the corner round to it under every choice: one curve, the corner kept.
+  enum class Corners { Refuse, Keep, Smooth };
+  Corners corners = Corners::Refuse;
 };
 
 /// What fairFitReport learned, for a feature's status line.
@@ -43,6 +51,13 @@ struct FairFitResult {
   int curvatureExtrema = 0;   ///< interior curvature extrema of the curve
   double noise = 0.0;         ///< the noise used (given or estimated)
   int iterations = 0;         ///< refinement passes
+  Eigen::Index mergedPoints = 0;    ///< input points merged into a coincident neighbour
+  bool closed = false;              ///< the data were fitted as closed (given, or recognised)
+  bool recognisedClosed = false;    ///< open data whose last point repeats the first: closed
+  std::vector<Eigen::Index> corners;  ///< the input points found to be corners (numbered from 0)
+  int pinned = 0;                   ///< samples the curve was made to pass through (step 8)
+  /// Corners::Keep: the pieces between corners, in order (curve is the first); else curve alone.
+  std::vector<BSplineCurve> pieces;
 };
 
 /// The fair fit of samples q (n x 2 or n x 3, in order): a clamped (open) or periodic
@@ -55,9 +70,13 @@ struct FairFitResult {
 /// more curvature sign changes than the data's smoothed curvature has above its noise, are
 /// sought, not proved (docs/FAIR_FIT.md says which parts are heuristic; the result reports
 /// both counts).
+/// Consecutive points closer than 1e-3 of the tolerance (at most 1e-9 of the data's size)
+/// are merged, and open data whose last point repeats the first are closed (without end
+/// conditions). Where the csr-spline relaxes beyond the tolerance, the curve is made to pass
+/// through the samples (step 8), so any tolerance above the noise is met.
 /// Throws InputError for samples validateSamples refuses (fewer than 4 rows, not 2 or 3
-/// columns, a coordinate that is not finite, all points coincident, two consecutive points
-/// (cyclically, when closed) coincident), a tolerance that is not positive and finite, a
+/// columns, a coordinate that is not finite, all points coincident), points out of order
+/// along the curve (naming them), corners under Corners::Refuse, a tolerance that is not positive and finite, a
 /// noise that is negative or not finite, end conditions given for closed data, a tangent
 /// that is zero or not finite or of the wrong dimension, a curvature without its tangent,
 /// a tolerance that even the csr-spline of all samples does not reach (the message gives

@@ -1,0 +1,128 @@
+// Fair fit, real input (issue 25): scanners and exports repeat points, files list closed
+// loops with the first point again at the end, points come out of order, and profiles have
+// corners (an airfoil's sharp trailing edge). The fit merges the first, recognises the
+// second, refuses the third by name, and finds the fourth so that a corner is kept as one
+// and never smoothed over silently. docs/FAIR_FIT.md, step 1.
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "fair_fit_detail.hpp"
+#include "fairsplines/errors.hpp"
+#include "fairsplines/parameters.hpp"
+
+namespace fairsplines::detail::fairfit {
+
+// ---------------------------------------------------------------------------------------
+// Coincident points and closed data
+
+MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance) {
+  const Index n = q.rows(), dim = q.cols();
+  if (n < 4 || (dim != 2 && dim != 3) || !q.allFinite()) {
+    validateSamples(q, closed, 4, "the fair fit");  // throws, naming what is wrong
+  }
+  const Eigen::RowVectorXd lo = q.colwise().minCoeff(), hi = q.colwise().maxCoeff();
+  const double size = (hi - lo).norm();
+  const double delta = std::max(2e-12 * size, std::min(1e-9 * size, 1e-3 * tolerance));
+  MergedInput out;
+  out.closed = closed;
+  std::vector<Index> keep;
+  keep.reserve(n);
+  Index run = 0;  // the first point of the present run
+  for (Index i = 0; i < n; ++i) {
+    if (i > 0) {
+      const double d = (q.row(i) - q.row(run)).norm();
+      if (d <= delta) {
+        out.offset = std::max(out.offset, d);
+        ++out.merged;
+        continue;
+      }
+    }
+    run = i;
+    keep.push_back(i);
+  }
+  // The last point repeating the first: closed data (the repeat dropped).
+  if (keep.size() > 2) {
+    const double d = (q.row(keep.back()) - q.row(keep.front())).norm();
+    if (d <= delta) {
+      out.offset = std::max(out.offset, d);
+      ++out.merged;
+      keep.pop_back();
+      out.recognisedClosed = !closed;
+      out.closed = true;
+    }
+  }
+  if (keep.size() < 4 && out.merged > 0) {
+    if (keep.size() == 1) throw InputError("the fair fit needs points that do not all coincide: all points coincide");
+    throw InputError("the fair fit needs at least 4 distinct points: after merging coincident neighbours, " +
+                     std::to_string(keep.size()) + " distinct points remain");
+  }
+  out.q.resize(static_cast<Index>(keep.size()), dim);
+  for (std::size_t j = 0; j < keep.size(); ++j) out.q.row(static_cast<Index>(j)) = q.row(keep[j]);
+  out.origin = std::move(keep);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Order and corners
+
+std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector<Index>& origin) {
+  const Index n = S.n;
+  std::vector<Index> corners;
+  if (n < 5) return corners;
+  // The stride: chords of at least 20 noise deviations (the direction of a shorter chord is
+  // the noise's, not the curve's), from the median chord.
+  std::vector<double> chords(S.s.size() - 1);
+  for (std::size_t i = 0; i + 1 < S.s.size(); ++i) chords[i] = S.s[i + 1] - S.s[i];
+  std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
+  const double median = chords[chords.size() / 2];
+  Index k = 1;
+  if (median > 0.0 && 20.0 * sigma > median) k = static_cast<Index>(std::ceil(20.0 * sigma / median));
+  if (4 * k >= n) return corners;  // too few samples above the noise to tell
+  auto at = [&](Index i) -> const Vector3d& { return S.p[S.wrap(i)]; };
+  auto inside = [&](Index i) { return S.closed || (i - k >= 0 && i + k <= n - 1); };
+  // turn[i]: the angle between the chords q_(i-k) -> q_i and q_i -> q_(i+k).
+  std::vector<double> turn(n, 0.0);
+  for (Index i = 0; i < n; ++i) {
+    if (!inside(i)) continue;
+    const Vector3d a = at(i) - at(i - k), b = at(i + k) - at(i);
+    const double la = a.norm(), lb = b.norm();
+    if (!(la > 0.0 && lb > 0.0)) continue;
+    turn[i] = std::atan2(a.cross(b).norm(), a.dot(b));
+  }
+  // Points out of order: the data run back along themselves at two consecutive samples
+  // (stride 1, chords above the noise).
+  if (k == 1) {
+    for (Index i = 0; i + 1 < n; ++i) {
+      if (!inside(i) || !inside(i + 1)) continue;
+      const double back = 135.0 * M_PI / 180.0;
+      if (turn[i] > back && turn[i + 1] > back) {
+        std::ostringstream msg;
+        msg << "the points are not in order along the curve: the data run back on themselves at points "
+            << origin[S.wrap(i)] << " and " << origin[S.wrap(i + 1)]
+            << " (numbered from 0), as a pair of points out of order does; sort the points along the curve";
+        throw InputError(msg.str());
+      }
+    }
+  }
+  // Corners: a turn of at least 30 degrees, at least 5 times the turns a stride away, and
+  // the largest within half a stride.
+  const double minTurn = 30.0 * M_PI / 180.0;
+  for (Index i = 0; i < n; ++i) {
+    if (!inside(i) || turn[i] < minTurn) continue;
+    const double left = inside(i - k) ? turn[S.wrap(i - k)] : 0.0, right = inside(i + k) ? turn[S.wrap(i + k)] : 0.0;
+    if (!(turn[i] >= 5.0 * std::max(left, right))) continue;
+    bool largest = true;
+    for (Index d = -(k / 2); d <= k / 2 && largest; ++d) {
+      if (d == 0 || !inside(i + d)) continue;
+      const double other = turn[S.wrap(i + d)];
+      if (other > turn[i] || (other == turn[i] && d < 0)) largest = false;
+    }
+    if (largest) corners.push_back(i);
+  }
+  return corners;
+}
+
+}  // namespace fairsplines::detail::fairfit
