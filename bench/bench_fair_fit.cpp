@@ -27,9 +27,11 @@
 #include <functional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "fairsplines/analysis.hpp"
 #include "fairsplines/csr.hpp"
+#include "fairsplines/errors.hpp"
 #include "fairsplines/fair_fit.hpp"
 #include "fairsplines/occt.hpp"
 #include "bench_timing.hpp"
@@ -163,13 +165,124 @@ Row occt(const std::function<Handle(Geom_BSplineCurve)()>& fit, const PointMatri
   return r;
 }
 
+/// A NACA 4-digit airfoil of chord 1 (cosine spacing, n points a side), as a Selig file lists
+/// it: trailing edge, upper side, nose, lower side, trailing edge (2 n - 1 points); blunt
+/// trailing edge (the formula's -0.1015).
+PointMatrix naca4(double m, double p, double t, int n) {
+  PointMatrix q(2 * n - 1, 3);
+  auto side = [&](double x, double sign) {
+    const double yt =
+        5 * t * (0.2969 * std::sqrt(x) - 0.1260 * x - 0.3516 * x * x + 0.2843 * x * x * x - 0.1015 * x * x * x * x);
+    double yc = 0, dyc = 0;
+    if (m > 0) {
+      yc = x < p ? m / (p * p) * (2 * p * x - x * x) : m / ((1 - p) * (1 - p)) * ((1 - 2 * p) + 2 * p * x - x * x);
+      dyc = x < p ? 2 * m / (p * p) * (p - x) : 2 * m / ((1 - p) * (1 - p)) * (p - x);
+    }
+    const double th = std::atan(dyc);
+    return Eigen::RowVector3d(x - sign * yt * std::sin(th), yc + sign * yt * std::cos(th), 0.0);
+  };
+  for (int i = 0; i < n; ++i) {
+    const double x = 0.5 * (1 - std::cos(M_PI * i / (n - 1)));
+    q.row(n - 1 - i) = side(x, 1.0);
+    if (i > 0) q.row(n - 1 + i) = side(x, -1.0);
+  }
+  return q;
+}
+
+/// A road of lines, clothoids and arcs with two hairpins (170 deg on radii 8 and 9 m) and a
+/// reverse curve, sampled every 10 m, Gaussian noise 5 cm per coordinate (as the tests'
+/// hairpin_road).
+PointMatrix hairpinRoad(unsigned seed) {
+  struct Piece {
+    double length, k0, k1;
+  };
+  const double r1 = 8, r2 = 9, sweep = 170 * M_PI / 180, L = 30;
+  const std::vector<Piece> plan = {{120, 0, 0},
+                                   {8, 0, 1 / r1},
+                                   {sweep * r1 - 8, 1 / r1, 1 / r1},
+                                   {8, 1 / r1, 0},
+                                   {150, 0, 0},
+                                   {L, 0, -1.0 / 100},
+                                   {60, -0.01, -0.01},
+                                   {L, -0.01, 0},
+                                   {40, 0, 0},
+                                   {L, 0, 1.0 / 120},
+                                   {50, 1.0 / 120, 1.0 / 120},
+                                   {L, 1.0 / 120, 0},
+                                   {130, 0, 0},
+                                   {8, 0, -1 / r2},
+                                   {sweep * r2 - 8, -1 / r2, -1 / r2},
+                                   {8, -1 / r2, 0},
+                                   {120, 0, 0}};
+  std::vector<Eigen::Vector2d> pts{{0, 0}};
+  Eigen::Vector2d pos(0, 0);
+  double heading = 0, s = 0, next = 10;
+  const double ds = 0.01;
+  for (const Piece& pc : plan) {
+    const int steps = static_cast<int>(std::round(pc.length / ds));
+    for (int i = 0; i < steps; ++i) {
+      const double k = pc.k0 + (pc.k1 - pc.k0) * (i + 0.5) / steps, h = pc.length / steps;
+      heading += 0.5 * k * h;
+      pos += h * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+      heading += 0.5 * k * h;
+      s += h;
+      if (s >= next) pts.push_back(pos), next += 10;
+    }
+  }
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  PointMatrix q(static_cast<Eigen::Index>(pts.size()), 3);
+  for (std::size_t i = 0; i < pts.size(); ++i) q.row(i) << pts[i].x() + noise(rng), pts[i].y() + noise(rng), 0.0;
+  return q;
+}
+
+/// The fair fit and OCCT's approximation (Part's approximate: PointsToBSpline, degree 3..8,
+/// C2) of the same data at the same tolerance.
+void realDataRow(const char* name, const PointMatrix& q, double tol) {
+  FairFitOptions o;
+  o.tolerance = tol;
+  BSplineCurve fair;
+  std::string refused;
+  double t = 0;
+  try {
+    t = bestSeconds([&] { fair = fairFit(q, o); }, 20);
+  } catch (const InputError& e) {
+    refused = e.what();
+  }
+  std::printf("%s, tolerance %.3g\n", name, tol);
+  if (refused.empty()) {
+    print("fair fit", measure(toOcct(fair), q, t));
+  } else {
+    std::printf("  %-26s refused: %.90s\n", "fair fit", refused.c_str());
+  }
+  TColgp_Array1OfPnt pts(1, static_cast<int>(q.rows()));
+  for (int i = 0; i < q.rows(); ++i) pts.SetValue(i + 1, gp_Pnt(q(i, 0), q(i, 1), q(i, 2)));
+  print("OCCT PointsToBSpline",
+        occt([&] { return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, tol).Curve(); }, q, 3));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   // Optional: the largest N to run (default 10^6), e.g. `bench_fair_fit 10000` for a quick look;
-  // `bench_fair_fit N tight`: only the tight-tolerance table.
+  // `bench_fair_fit N tight`: only the tight-tolerance table; `bench_fair_fit 0 real`: only
+  // the airfoil and road table.
   const long maxN = argc > 1 ? std::atol(argv[1]) : 1000000;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line, also into a file
+  const bool realOnly = argc > 2 && std::string(argv[2]) == "real";
+  if (argc <= 2 || realOnly) {
+    std::printf("real data: NACA airfoils (Selig order, blunt trailing edge) and hairpin roads (10 m, 5 cm noise)\n");
+    std::printf("  %-26s %8s %12s %8s %8s %12s\n", "method", "poles", "max dev", "sign ch", "extrema", "time [ms]");
+    for (double tol : {1e-3, 5e-4, 2e-4}) {
+      realDataRow("NACA 0012, 61 points", naca4(0, 0, 0.12, 31), tol);
+      realDataRow("NACA 0006, 61 points", naca4(0, 0, 0.06, 31), tol);
+      realDataRow("NACA 6409, 61 points", naca4(0.06, 0.4, 0.09, 31), tol);
+      realDataRow("NACA 2412, 399 points", naca4(0.02, 0.4, 0.12, 200), tol);
+    }
+    for (unsigned seed : {1u, 2u, 3u}) realDataRow("hairpin road", hairpinRoad(seed), 0.25);
+    if (realOnly) return 0;
+    std::printf("\n");
+  }
   std::printf("fair fit vs csr-spline vs GeomAPI_PointsToBSpline (degree 3..8, C2, Tol3D = tolerance), same data\n");
   std::printf("half circle + flat parabola (convex), uniform noise 1e-4 of the size, tolerance 1e-3 of the size\n");
   for (int n : {1000, 10000, 100000, 1000000}) {

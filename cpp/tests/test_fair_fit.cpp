@@ -281,9 +281,12 @@ TEST(FairFit, BadInputIsRefusedByName) {
   nan(7, 1) = std::nan("");
   EXPECT_NE(refusal(nan, o).find("finite"), std::string::npos);
   EXPECT_NE(refusal(q.topRows(3), o).find("at least 4"), std::string::npos);
-  PointMatrix twice = q;
+  PointMatrix twice = q;  // repeated points are merged (issue 25); all coincident ones are refused
   twice.row(8) = twice.row(7);
-  EXPECT_NE(refusal(twice, o).find("coincide"), std::string::npos);
+  EXPECT_EQ(fairFitReport(twice, o).mergedPoints, 1);
+  PointMatrix same = q;
+  same.rowwise() = q.row(3);
+  EXPECT_NE(refusal(same, o).find("coincide"), std::string::npos);
   for (double tol : {0.0, -1.0, HUGE_VAL, std::nan("")}) {
     FairFitOptions bad = o;
     bad.tolerance = tol;
@@ -313,8 +316,8 @@ TEST(FairFit, ToleranceBelowTheNoiseIsRefusedNamingTheNoise) {
   FairFitOptions o;
   o.tolerance = 1e-5 * sizeOf(q);
   const std::string why = refusal(q, o);
-  EXPECT_NE(why.find("cannot keep within the tolerance"), std::string::npos) << why;
-  EXPECT_NE(why.find("noise"), std::string::npos) << why;
+  EXPECT_NE(why.find("below the noise"), std::string::npos) << why;
+  EXPECT_NE(why.find("3 times the noise"), std::string::npos) << why;
 }
 
 TEST(FairFit, EstimatesTheNoiseOfGaussianScatter) {
@@ -469,12 +472,147 @@ TEST(FairFit, SamplesOfAnySizeFitAsAtSizeOne) {
     so.tolerance = o.tolerance * s;
     const FairFitResult r = fairFitReport(q * s, so);
     EXPECT_EQ(r.curve.poles.rows(), one.curve.poles.rows());
-    EXPECT_EQ(r.curvatureExtrema, one.curvatureExtrema);
+    // The fairing under the tolerance is iterative (ADMM): the rounding of q * s (s is not a
+    // power of two) may end it one extremum apart.
+    EXPECT_LE(std::abs(r.curvatureExtrema - one.curvatureExtrema), 1);
     EXPECT_LE(r.maxDeviation, so.tolerance);
     BSplineCurve back = r.curve;
     back.poles /= s;
     const Handle(Geom_BSplineCurve) c = toOcct(back);
     EXPECT_LE(maxDistance(c, q, 2), o.tolerance * (1 + 1e-9));
     EXPECT_EQ(signChanges(signedCurvature(c)), 0);
+  }
+}
+
+// ---- The tolerance as a constraint (fair_fit_constrained.cpp; issue 25)
+
+namespace {
+
+/// A random cubic with simple interior knots, clamped or periodic, and its spline space.
+BSplineCurve randomCubic(std::mt19937& rng, int m, bool periodic) {
+  std::uniform_real_distribution<double> step(0.2, 3.0), coord(-5.0, 5.0);
+  BSplineCurve c;
+  c.degree = 3;
+  c.periodic = periodic;
+  c.knots.resize(m + 1);
+  c.knots[0] = -0.5;
+  for (int i = 1; i <= m; ++i) c.knots[i] = c.knots[i - 1] + step(rng);
+  c.poles.resize(periodic ? m : m + 3, 3);
+  for (Eigen::Index i = 0; i < c.poles.rows(); ++i) c.poles.row(i) << coord(rng), coord(rng), coord(rng);
+  c.mults = Eigen::VectorXi::Ones(m + 1);
+  if (!periodic) c.mults[0] = c.mults[m] = 4;
+  return c;
+}
+
+detail::fairfit::SplineSpace spaceOf(const BSplineCurve& c) {
+  return {std::vector<double>(c.knots.data(), c.knots.data() + c.knots.size()), c.periodic};
+}
+
+Eigen::Vector3d at(const Handle(Geom_BSplineCurve)& occ, double u, int derivative = 0) {
+  gp_Pnt p;
+  gp_Vec d1, d2, d3;
+  occ->D3(u, p, d1, d2, d3);
+  const gp_XYZ v = derivative == 0 ? p.XYZ() : derivative == 2 ? d2.XYZ() : d3.XYZ();
+  return {v.X(), v.Y(), v.Z()};
+}
+
+}  // namespace
+
+TEST(FairFitConstrained, BasisAndDerivativeWeightsAgreeWithOcct) {
+  // The weights the constrained fit builds its rows from (C, C'' at span ends, C''') against
+  // OCCT's D3 of the same curve: clamped and periodic, several span counts.
+  std::mt19937 rng(5);
+  for (bool periodic : {false, true}) {
+    for (int m : {1, 3, 7, 12}) {
+      if (periodic && m < 4) continue;
+      const BSplineCurve c = randomCubic(rng, m, periodic);
+      const Handle(Geom_BSplineCurve) occ = toOcct(c);
+      const auto S = spaceOf(c);
+      ASSERT_EQ(S.poles(), c.poles.rows());
+      for (Eigen::Index j = 0; j < m; ++j) {
+        SCOPED_TRACE((periodic ? "periodic, span " : "clamped, span ") + std::to_string(j));
+        const double h = c.knots[j + 1] - c.knots[j];
+        auto combine = [&](const std::array<double, 4>& w) {
+          Eigen::Vector3d v = Eigen::Vector3d::Zero();
+          for (int r = 0; r < 4; ++r) v += w[r] * c.poles.row(S.pole(j, r)).transpose();
+          return v;
+        };
+        for (double f : {0.0, 0.3, 0.81}) {
+          EXPECT_LE((combine(S.basis(j, f * h)) - at(occ, c.knots[j] + f * h)).norm(), 1e-12 * 10);
+        }
+        const auto second = S.secondDerivative(j);
+        const double inside = 1e-9 * h;  // OCCT's D3 at a knot is the right-hand span's
+        EXPECT_LE((combine(second[0]) - at(occ, c.knots[j] + inside, 2)).norm(),
+                  1e-6 * (1 + combine(second[0]).norm()));
+        EXPECT_LE((combine(second[1]) - at(occ, c.knots[j + 1] - inside, 2)).norm(),
+                  1e-6 * (1 + combine(second[1]).norm()));
+        EXPECT_LE((combine(S.thirdDerivative(j)) - at(occ, c.knots[j] + 0.5 * h, 3)).norm(),
+                  1e-9 * (1 + combine(S.thirdDerivative(j)).norm()));
+      }
+    }
+  }
+}
+
+TEST(FairFitConstrained, PinsPutTheCurveThroughTheirPointsAndKeepFixedPoles) {
+  std::mt19937 rng(8);
+  for (bool periodic : {false, true}) {
+    BSplineCurve c = randomCubic(rng, 9, periodic);
+    const auto S = spaceOf(c);
+    Eigen::MatrixX3d P = detail::fairfit::polesOf(c);
+    const Eigen::MatrixX3d before = P;
+    std::vector<std::pair<Eigen::Index, Eigen::Vector3d>> pins;
+    for (Eigen::Index k : {2, 3, 4, 7}) pins.push_back({k, Eigen::Vector3d(k, -k, 0.5 * k)});
+    std::vector<char> fixed(P.rows(), 0);
+    fixed[0] = fixed[P.rows() - 1] = 1;
+    ASSERT_TRUE(detail::fairfit::pinAtKnots(S, P, pins, fixed));
+    detail::fairfit::setPoles(c, P);
+    const Handle(Geom_BSplineCurve) occ = toOcct(c);
+    for (const auto& [k, q] : pins) EXPECT_LE((at(occ, c.knots[k]) - q).norm(), 1e-10) << "knot " << k;
+    EXPECT_EQ(P.row(0), before.row(0));
+    EXPECT_EQ(P.row(P.rows() - 1), before.row(P.rows() - 1));
+  }
+}
+
+TEST(FairFitConstrained, FairingKeepsEverySampleWithinTheToleranceAndLowersTheEnergy) {
+  // A wiggly cubic fitted to samples of a circle arc within 0.02: the constrained fairing
+  // must lower the energy and leave every sample within 0.02 of its curve point (judged by
+  // OCCT's evaluation of the new curve at the samples' parameters).
+  std::mt19937 rng(3);
+  std::normal_distribution<double> wiggle(0.0, 0.004);
+  const int n = 400, m = 12;
+  BSplineCurve c;
+  c.degree = 3;
+  c.knots = Eigen::VectorXd::LinSpaced(m + 1, 0.0, 3.0);
+  c.mults = Eigen::VectorXi::Ones(m + 1);
+  c.mults[0] = c.mults[m] = 4;
+  // Poles near the unit circle (the curve near an arc of angle 3), with wiggles.
+  c.poles.resize(m + 3, 3);
+  for (int i = 0; i < m + 3; ++i) {
+    const double a = 3.0 * i / (m + 2);
+    c.poles.row(i) << std::cos(a) + wiggle(rng), std::sin(a) + wiggle(rng), 0.0;
+  }
+  const auto S = spaceOf(c);
+  Handle(Geom_BSplineCurve) occ = toOcct(c);
+  detail::fairfit::ConstrainedFairing f;
+  f.tolerance = 0.02;
+  std::vector<Eigen::Vector3d> q(n);
+  for (int i = 0; i < n; ++i) {
+    const double u = 3.0 * i / (n - 1);
+    const Eigen::Index span = std::min<Eigen::Index>(static_cast<Eigen::Index>(u / 0.25), m - 1);
+    q[i] = at(occ, u) + Eigen::Vector3d(0.01 * std::sin(7.0 * i), 0.01 * std::cos(5.0 * i), 0.0);
+    f.sample.push_back(i);
+    f.feet.push_back({span, u - c.knots[span], (at(occ, u) - q[i]).norm()});
+  }
+  f.q = &q;
+  f.fixed.assign(m + 3, 0);
+  f.fixed[0] = f.fixed[m + 2] = 1;
+  Eigen::MatrixX3d P = detail::fairfit::polesOf(c);
+  detail::fairfit::fairUnderTolerance(S, P, f);
+  EXPECT_LT(f.energyAfter, 0.5 * f.energyBefore);
+  detail::fairfit::setPoles(c, P);
+  occ = toOcct(c);
+  for (int i = 0; i < n; ++i) {
+    const double u = c.knots[f.feet[i].span] + f.feet[i].x;
+    EXPECT_LE((at(occ, u) - q[i]).norm(), 0.02 * (1 + 1e-12)) << "sample " << i;
   }
 }

@@ -232,9 +232,8 @@ private:
     std::vector<std::array<Index, 3>> all;  // sample, raw, pinned
     for (std::size_t j = 0; j < sub.index.size(); ++j) all.push_back({sub.index[j], sub.raw[j], sub.pinned[j]});
     for (Index i : extra) all.push_back({i, 0, 0});
-    std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
-      return a[0] < b[0] || (a[0] == b[0] && a[1] + a[2] > b[1] + b[2]);
-    });
+    std::sort(all.begin(), all.end(),
+              [](const auto& a, const auto& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] + a[2] > b[1] + b[2]); });
     for (const auto& [i, raw, pinned] : all) {
       if (!next.index.empty() && next.index.back() == i) continue;  // keeps the flags of the first (flagged first)
       next.index.push_back(i);

@@ -87,7 +87,7 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
 /// The fairness energy E(P) = wB * integral of |C''|^2 + wJ * sum over interior knots t_k of
-/// |J_k|^2 hbar_k^5, J_k the jump of C''' at t_k (five poles k - 1 .. k + 3) and hbar_k the
+/// |J_k|^2 hbar_k^3, J_k the jump of C''' at t_k (five poles k - 1 .. k + 3) and hbar_k the
 /// mean of the two spans (both terms in 1 / length: the parameter is about arc length).
 /// The first is the bending energy of the classic smoothing spline: it straightens what the
 /// tolerance lets straighten, so a curve in a band gets no inflection the band does not
@@ -104,8 +104,8 @@ void energyTriplets(const SplineSpace& S, Triplets& out) {
     const std::array<std::array<double, 4>, 2> ab = S.secondDerivative(j);
     for (int r = 0; r < 4; ++r) {
       for (int c = 0; c < 4; ++c) {
-        const double v = h / 3.0 *
-                         (ab[0][r] * ab[0][c] + 0.5 * (ab[0][r] * ab[1][c] + ab[1][r] * ab[0][c]) + ab[1][r] * ab[1][c]);
+        const double v =
+            h / 3.0 * (ab[0][r] * ab[0][c] + 0.5 * (ab[0][r] * ab[1][c] + ab[1][r] * ab[0][c]) + ab[1][r] * ab[1][c]);
         out.emplace_back(S.pole(j, r), S.pole(j, c), wBend * v);
       }
     }
@@ -114,7 +114,7 @@ void energyTriplets(const SplineSpace& S, Triplets& out) {
     const Index left = k > 0 ? k - 1 : m - 1;
     const double hbar = 0.5 * ((S.knot(k + 1) - S.knot(k)) + (S.knot(k) - S.knot(k - 1)));
     if (!(hbar > 0.0)) continue;
-    const double weight = wJump * std::pow(hbar, 5);
+    const double weight = wJump * hbar * hbar * hbar;
     const std::array<double, 4> a = S.thirdDerivative(left), b = S.thirdDerivative(k);
     // The jump's weights on its poles (the two spans share three of them).
     std::array<std::pair<Index, double>, 8> w;
@@ -271,20 +271,23 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   // optimization and statistical learning via the alternating direction method of
   // multipliers", 2011, Section 5): the P-step solves (E + rho sum N N^T) P = rho sum N (q_i
   // + z_i - w_i) with one factorisation, the z-step projects onto the balls, w gathers the
-  // residuals. rho balances the two terms pole for pole.
-  const double rho = trace / dataTrace;
-  Triplets t = et;
-  for (Index i = 0; i < nq; ++i)
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c)
-        t.emplace_back(S.pole(rows[i].span, r), S.pole(rows[i].span, c), rho * rows[i].N[r] * rows[i].N[c]);
-  SparseMatrix A(np, np);
-  A.setFromTriplets(t.begin(), t.end());
+  // residuals. rho starts balancing the two terms pole for pole and is adapted to keep the
+  // primal and dual residuals within a factor 10 of each other (ibid., 3.4.1).
+  double rho = trace / dataTrace;
   Eigen::MatrixX3d fixedRhs;
-  const SparseMatrix Af = reduce(A, number, nf, P, fixedRhs);
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
-  ldlt.compute(Af);
-  if (ldlt.info() != Eigen::Success) return;
+  auto factor = [&]() {
+    Triplets t = et;
+    for (Index i = 0; i < nq; ++i)
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+          t.emplace_back(S.pole(rows[i].span, r), S.pole(rows[i].span, c), rho * rows[i].N[r] * rows[i].N[c]);
+    SparseMatrix A(np, np);
+    A.setFromTriplets(t.begin(), t.end());
+    ldlt.compute(reduce(A, number, nf, P, fixedRhs));
+    return ldlt.info() == Eigen::Success;
+  };
+  if (!factor()) return;
   std::vector<Vector3d> z(nq), w(nq, Vector3d::Zero());
   for (Index i = 0; i < nq; ++i) z[i] = pointOf(P, rows[i]) - q[f.sample[i]];
   Eigen::MatrixX3d X = P;
@@ -317,7 +320,15 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
       dual = std::max(dual, (zNew - z[i]).norm());
       z[i] = zNew;
     }
-    if (primal <= 1e-3 * f.tolerance && dual <= 1e-3 * f.tolerance) break;
+    dual *= rho;
+    // Converged to 1e-2 of the tolerance: the step below keeps the rest feasible.
+    if (primal <= 1e-2 * f.tolerance && dual <= 1e-2 * f.tolerance * rho) break;
+    if (it % 10 == 9 && (primal > 10.0 * dual || dual > 10.0 * primal)) {
+      const double grow = primal > dual ? 2.0 : 0.5;
+      rho *= grow;
+      for (Vector3d& wi : w) wi /= grow;  // w is the multiplier divided by rho
+      if (!factor()) break;
+    }
   }
   // From the feasible P as far towards the ADMM iterate as every constraint allows: the
   // balls are convex, so |r_i + alpha s_i| <= tau_i holds on [0, alpha_i].

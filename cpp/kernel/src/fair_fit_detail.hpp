@@ -217,7 +217,6 @@ using Thinning = Polishing;
 /// is empty).
 Handle(Geom_BSplineCurve) removeKnots(const Handle(Geom_BSplineCurve)& occ, Thinning& t);
 
-
 // ---------------------------------------------------------------------------------------
 // The tolerance as a constraint (fair_fit_constrained.cpp): interpolation pins where the
 // csr-spline relaxes beyond the tolerance, and fairing under the tolerance constraints
@@ -273,7 +272,7 @@ struct ConstrainedFairing {
   std::vector<Index> sample;                 // per foot: its sample index
   std::vector<Foot> feet;                    // span and parameter of each constrained point
   std::vector<char> fixed;                   // per pole
-  int rounds = 200;  // ADMM iterations at most
+  int rounds = 200;                          // ADMM iterations at most
   double energyBefore = 0.0, energyAfter = 0.0;
   int roundsUsed = 0;
 };

@@ -9,9 +9,9 @@
 #include <sstream>
 #include <vector>
 
-#include "fair_fit_detail.hpp"
 #include "fairsplines/errors.hpp"
 #include "fairsplines/parameters.hpp"
+#include "fair_fit_detail.hpp"
 
 namespace fairsplines::detail::fairfit {
 
@@ -72,16 +72,19 @@ std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector
   const Index n = S.n;
   std::vector<Index> corners;
   if (n < 5) return corners;
-  // The stride: chords of at least 20 noise deviations (the direction of a shorter chord is
-  // the noise's, not the curve's), from the median chord.
-  std::vector<double> chords(S.s.size() - 1);
-  for (std::size_t i = 0; i + 1 < S.s.size(); ++i) chords[i] = S.s[i + 1] - S.s[i];
-  std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
-  const double median = chords[chords.size() / 2];
-  Index k = 1;
-  if (median > 0.0 && 20.0 * sigma > median) k = static_cast<Index>(std::ceil(20.0 * sigma / median));
-  if (4 * k >= n) return corners;  // too few samples above the noise to tell
+  // The stride: chords q_i q_(i+k) of at least 20 noise deviations (the direction of a shorter
+  // chord is the noise's, not the curve's): k doubles until their median (at up to 2000 i) is.
   auto at = [&](Index i) -> const Vector3d& { return S.p[S.wrap(i)]; };
+  Index k = 1;
+  for (;;) {
+    if (4 * k >= n) return corners;  // too few samples above the noise to tell
+    std::vector<double> chords;
+    const Index last = S.closed ? n : n - k, step = std::max<Index>(1, last / 2000);
+    for (Index i = 0; i < last; i += step) chords.push_back((at(i + k) - at(i)).norm());
+    std::nth_element(chords.begin(), chords.begin() + chords.size() / 2, chords.end());
+    if (chords[chords.size() / 2] >= 20.0 * sigma) break;
+    k *= 2;
+  }
   auto inside = [&](Index i) { return S.closed || (i - k >= 0 && i + k <= n - 1); };
   // turn[i]: the angle between the chords q_(i-k) -> q_i and q_i -> q_(i+k).
   std::vector<double> turn(n, 0.0);

@@ -45,17 +45,17 @@ struct FairFitOptions {
 /// What fairFitReport learned, for a feature's status line.
 struct FairFitResult {
   BSplineCurve curve;
-  double maxDeviation = 0.0;  ///< the largest sample-to-curve distance found (an upper bound)
-  int signChanges = 0;        ///< curvature sign changes of the curve (0 when not planar)
-  int dataSignChanges = 0;    ///< sign changes of the data's smoothed curvature above its noise
-  int curvatureExtrema = 0;   ///< interior curvature extrema of the curve
-  double noise = 0.0;         ///< the noise used (given or estimated)
-  int iterations = 0;         ///< refinement passes
-  Eigen::Index mergedPoints = 0;    ///< input points merged into a coincident neighbour
-  bool closed = false;              ///< the data were fitted as closed (given, or recognised)
-  bool recognisedClosed = false;    ///< open data whose last point repeats the first: closed
+  double maxDeviation = 0.0;          ///< the largest sample-to-curve distance found (an upper bound)
+  int signChanges = 0;                ///< curvature sign changes of the curve (0 when not planar)
+  int dataSignChanges = 0;            ///< sign changes of the data's smoothed curvature above its noise
+  int curvatureExtrema = 0;           ///< interior curvature extrema of the curve
+  double noise = 0.0;                 ///< the noise used (given or estimated)
+  int iterations = 0;                 ///< refinement passes
+  Eigen::Index mergedPoints = 0;      ///< input points merged into a coincident neighbour
+  bool closed = false;                ///< the data were fitted as closed (given, or recognised)
+  bool recognisedClosed = false;      ///< open data whose last point repeats the first: closed
   std::vector<Eigen::Index> corners;  ///< the input points found to be corners (numbered from 0)
-  int pinned = 0;                   ///< samples the curve was made to pass through (step 8)
+  int pinned = 0;                     ///< samples the curve was made to pass through (step 8)
   /// Corners::Keep: the pieces between corners, in order (curve is the first); else curve alone.
   std::vector<BSplineCurve> pieces;
 };
