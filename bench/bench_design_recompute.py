@@ -1,7 +1,9 @@
 """Python benchmark: the FreeCAD recompute of a Design spline of 4 basic curves with 40
 marks after one mark moves (what a slider move does), beside the same-run cost of the
 nearest OCCT route in FreeCAD (each piece to a B-spline, joined by
-Part.BSplineCurve.join, which is GeomConvert_CompCurveToBSplineCurve: G1 joins).
+Part.BSplineCurve.join, which is GeomConvert_CompCurveToBSplineCurve: G1 joins); and
+fw.approximation_error of a circle arc with 2000 marks (issue 13: 15-25 s with a Python
+loop per sample point; tests/kernel/test_hardening.py checks its measure, not its time).
 
     /usr/bin/python3 bench/bench_design_recompute.py
 """
@@ -64,6 +66,11 @@ def main(repeats=301):
     print(f"{'FreeCAD recompute after one mark moves (C2)':<56} {recompute * 1e3:8.3f} ms")
     print(f"{'OCCT route in FreeCAD: toBSpline + join (G1 joins)':<56} {route * 1e3:8.3f} ms")
     print(f"{'ratio':<56} {recompute / route:8.2f}")
+    arc = fw.basic.CircleArc((0, 0, 0), 10, 0, 3)
+    many = [i / 2001 for i in range(1, 2001)]
+    t0 = time.perf_counter()
+    fw.approximation_error(arc, many)
+    print(f"{'fw.approximation_error, circle arc with 2000 marks (one run)':<56} {time.perf_counter() - t0:8.3f} s")
 
 
 if __name__ == "__main__":

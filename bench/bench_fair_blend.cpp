@@ -3,7 +3,9 @@
 // OCCT's FairCurve_MinimalVariation (end points and slopes, the same ends) and the cubic
 // Bezier that matches the end tangents with legs of a third of the chord (what
 // Surface_BlendCurve and CurvesWB build), in the same run. Every result is judged by the
-// exact certificate; the Bezier's curvature extrema are counted by dense sampling.
+// exact certificate; the Bezier's curvature extrema are counted by dense sampling. Last,
+// the slow inputs of issue 13 (fuzz_fair_blend), which the work budget ends (their outcome
+// is tested in test_hardening.cpp, their time measured here).
 #include <FairCurve_AnalysisCode.hxx>
 #include <FairCurve_MinimalVariation.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -15,8 +17,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
+#include "fairsplines/errors.hpp"
 #include "fairsplines/fair_blend.hpp"
 #include "fairsplines/monotone.hpp"
 #include "clothoid_arcs.hpp"
@@ -280,5 +284,40 @@ int main() {
               1e3 * quantile(occt2, 0.99), occt2Computed / 10.0, occt2Matching / 10.0, curvatureSign);
   std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n", "quintic Bezier matching the end 2-jets",
               quinticMonotone / 10.0, quinticTotal / 1000.0, quinticMax);
+
+  // The slow inputs of issue 13 (10 s to minutes before the work budget; about half a second
+  // each since): Hardening.Slow* in test_hardening.cpp, the same ends.
+  struct Slow {
+    const char* name;
+    BlendEnds ends;
+  };
+  std::vector<Slow> slow(3);
+  slow[0].name = "g2_over_2_minutes";
+  slow[0].ends.p0 = Vector3d(0, -0.15625, 0);
+  slow[0].ends.p1 = Vector3d(14.323599031789975, -2.4127053871581357, 0);
+  slow[0].ends.k0 = 26.25, slow[0].ends.k1 = -0.25;
+  slow[1].name = "g2_36_seconds";
+  slow[1].ends = slow[0].ends;
+  slow[1].ends.p0 = Vector3d(28.25, 28.25, 0);
+  slow[1].ends.t0 = Vector3d(0.15425144988758405, -0.98803162409286183, 0);
+  slow[1].ends.p1 = Vector3d(32.885408226586534, 26.641685564051201, 0);
+  slow[1].ends.t1 = Vector3d(0.80640949391225458, -0.59135752986512435, 0);
+  slow[1].ends.k0 = 7.75, slow[1].ends.k1 = 0;
+  slow[2].name = "g1_10_seconds";
+  slow[2].ends.p0 = Vector3d(10, -0.25, 0);
+  slow[2].ends.t0 = Vector3d(0.014648437063442545, -3.5762786509962977e-06, 0);
+  slow[2].ends.p1 = Vector3d(9.7500000074505806, -0.24993896484435632, 0);
+  slow[2].ends.t1 = Vector3d(0.0146484375, 0, 0);
+  std::printf("\nThe slow inputs of issue 13 (one run each)\n");
+  for (const Slow& s : slow) {
+    const auto t0 = Clock::now();
+    std::string outcome = "a curve";
+    try {
+      fairBlend(s.ends);
+    } catch (const InputError& e) {
+      outcome = std::string("refused: ") + e.what();
+    }
+    std::printf("%-44s %8.3f s  %.80s\n", s.name, seconds(t0), outcome.c_str());
+  }
   return 0;
 }

@@ -17,7 +17,6 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Solid.hxx>
-#include <chrono>
 #include <string>
 
 #include "fairsplines/blend_c1.hpp"
@@ -264,15 +263,18 @@ TEST(BlendShell, BrokenComplexesRaiseInputErrorNamingThePatch) {
   EXPECT_TRUE(has(inputErrorOf([&] { blendShell(thin); }), "collapses to a point"));
 }
 
-TEST(BlendShell, SteepConeBuildsAValidShellInBoundedTime) {
-  // Issue 13: slope 1e12, heights 0, 1, 2, three arcs around: sewing took 10-16 s.
-  const auto start = std::chrono::steady_clock::now();
+TEST(BlendShell, SteepConeBuildsAValidShell) {
+  // Issue 13: slope 1e12, heights 0, 1, 2, three arcs around: sewing took 10-16 s. The shell
+  // from the grid sews nothing (one edge per patch side, counted below); its time is
+  // measured by bench_blend, not asserted here.
   const BlendComplex c = blendCone(tilted(), 1.0, 1e12, vec({0.0, 2 * kPi / 3, 4 * kPi / 3, 2 * kPi}),
                                    vec({0.0, 1.0, 2.0}), CircleReparam::Rho, nullptr, true);
   const BlendShell built = blendShell(c);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, 0.5);
   EXPECT_TRUE(BRepCheck_Analyzer(built.shell).IsValid());
-  EXPECT_EQ(edgeUse(built.shell)[1], 2 * c.piecesU);
+  const int K = c.piecesU, R = rowsOf(c);
+  const std::array<int, 4> use = edgeUse(built.shell);
+  EXPECT_EQ(use[1], 2 * K);                // the free edges: bottom and top
+  EXPECT_EQ(use[2], K * (R - 1) + K * R);  // every other side shared by its two patches
+  EXPECT_EQ(use[3], 0);
   EXPECT_LT(built.maxGap, 1e-15 * 1e13);  // rounding of coordinates near 2e12
 }

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <Geom_BSplineCurve.hxx>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -306,17 +305,14 @@ TEST(Hardening, FairBlendOfADenormalTangentIsFiniteOrRefused) {  // denormal_tan
 }
 
 /// A slow input (fuzz_fair_blend g2_over_2_minutes, g2_36_seconds, g1_10_seconds: 10 s to
-/// minutes before the work budget): it now returns a finite curve or throws InputError (the
-/// budget's message), in about half a second in a release build (bound 3 s: the machine may
-/// be loaded; sanitized builds are slower, so the bound is only checked where NDEBUG is defined).
+/// minutes before the work budget): it now returns a valid, finite curve, or the fair blend's
+/// own work budget refuses it. Its work is bounded in the solver's deterministic units (the
+/// budget counts every unit of the solve), not asserted in seconds: bench_fair_blend times
+/// these inputs.
 void expectFinishes(const BlendEnds& e) {
-  const auto t0 = std::chrono::steady_clock::now();
   const std::string message = refusal([&] { expectValid(fairBlend(e).curve); });
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (!message.empty()) EXPECT_NE(message.find("work budget"), std::string::npos) << message;
-#ifdef NDEBUG
-  EXPECT_LT(seconds, 3.0);
-#endif
+  if (!message.empty())
+    EXPECT_NE(message.find("the fair blend of these ends ran out of its work budget"), std::string::npos) << message;
 }
 
 TEST(Hardening, SlowG2BlendsFinishWithinTheWorkBudget) {
@@ -342,6 +338,18 @@ TEST(Hardening, SlowG1BlendFinishesWithinTheWorkBudget) {  // g1_10_seconds
   e.p1 = Vector3d(9.7500000074505806, -0.24993896484435632, 0);
   e.t1 = Vector3d(0.0146484375, 0, 0);
   expectFinishes(e);
+}
+
+TEST(Hardening, TooFineAGridIsRefusedBeforeItsSearch) {
+  // The paper's grid search visits up to (0.5 / step)^4 points, each a unit of work: under a
+  // budget of no units at all, a step below the smallest is refused by name, so no point
+  // was tried; a step the search takes runs out of that budget at its first point.
+  const Vector3d p0(0, 0, 0), t0(1, 0, 0), p1(1, 0.5, 0), t1(0.8, 0.6, 0);
+  detail::WorkBudget nothing(0.0, "the test's empty budget");
+  expectRefused([&] { monotoneCurvatureSpline(p0, t0, p1, t1, MonotoneMethod::PaperGrid, 1e-3); },
+                "the grid step must be in [");
+  expectRefused([&] { monotoneCurvatureSpline(p0, t0, p1, t1, MonotoneMethod::PaperGrid, 0.05); },
+                "the test's empty budget ran out of its work budget");
 }
 
 TEST(Hardening, SphereOfRadius1_7e308IsRefused) {  // sphere_radius_1.7e308_patch_nan

@@ -1,6 +1,6 @@
 """The contract every public callable of the macro API keeps, whatever it is given: it
 raises fw.InputError (a ValueError) with a message, or returns finite, valid geometry,
-within a time bound. check_call is the one function the fuzz tests use."""
+within a hang limit. check_call is the one function the fuzz tests use."""
 import dataclasses
 import math
 import numbers
@@ -10,7 +10,11 @@ import numpy as np
 
 import freecad_workbench as fw
 
-TIME_BOUND = 2.0  # seconds per call (the kernel cannot be interrupted: measured, not enforced)
+# A hang detector, not a speed test (speed is measured in bench/): a call that takes this
+# long has no bound on its work. Generous on purpose (calls take milliseconds to about a
+# second; a loaded machine or a sanitized build may be ten times slower), so that it never
+# fails on a slow machine. The kernel cannot be interrupted: measured, not enforced.
+TIME_BOUND = 60.0  # seconds per call
 
 
 class ContractError(AssertionError):

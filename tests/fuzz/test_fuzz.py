@@ -1,8 +1,8 @@
 """Property-based fuzz of every public callable of the macro API (issue 13): whatever the
 arguments (NaN, inf, huge, tiny, duplicates, wrong types and shapes), a call raises
-fw.InputError with a message or returns finite, valid geometry, within a time bound.
-Deterministic (derandomized, no database); FAIRSPLINES_FUZZ_SCALE=10 runs ten times the
-examples."""
+fw.InputError with a message or returns finite, valid geometry, within a generous hang
+limit (contract.py). Deterministic (derandomized, no database); FAIRSPLINES_FUZZ_SCALE=10
+runs ten times the examples."""
 import os
 
 import pytest

@@ -52,6 +52,48 @@ def stripe_pixels(image):
     return dark, white
 
 
+def c2_jump(shell, samples=5):
+    """Largest relative jump of the derivatives across the shared edges of a shell of patches
+    over [0,1]^2, by OCCT's evaluation (getDN on both sides): C2 across a joint means that the
+    first and second derivatives across it agree up to the ratio beta of the two patches'
+    parameter lengths (beta and beta^2), one beta all along the joint."""
+    import Part
+
+    worst = 0.0
+
+    def side(surface, point):  # (across u or v, at its end 1 or its start 0), and (u, v)
+        u, v = surface.parameter(point)
+        for across, t in ((0, u), (1, v)):
+            for end in (0, 1):
+                if abs(t - end) < 1e-7:
+                    return across, end, (u, v)
+        raise AssertionError(f"{point} is on no side of its face ({u}, {v})")
+
+    for edge in shell.Edges:
+        if edge.Degenerated:
+            continue
+        owners = shell.ancestorsOfType(edge, Part.Face)
+        if len(owners) != 2:
+            continue
+        a, b = (f.Surface for f in owners)
+        first, last = edge.ParameterRange
+        joint = []
+        for t in np.linspace(first, last, samples + 2)[1:-1]:
+            point = edge.valueAt(t)
+            (ax, aend, auv), (bx, bend, buv) = side(a, point), side(b, point)
+            sign = 1.0 if aend != bend else -1.0  # the parameters across run the same way, or not
+            da = [a.getDN(*auv, *((k, 0) if ax == 0 else (0, k))) for k in (1, 2)]
+            db = [b.getDN(*buv, *((k, 0) if bx == 0 else (0, k))) for k in (1, 2)]
+            joint.append((da, db, sign))
+        da, db, sign = joint[len(joint) // 2]
+        beta = sign * db[0].dot(da[0]) / da[0].dot(da[0])
+        for da, db, sign in joint:
+            scale = max(da[0].Length, da[1].Length)
+            worst = max(worst, (db[0] - da[0] * (sign * beta)).Length / scale,
+                        (db[1] - da[1] * beta ** 2).Length / scale)
+    return worst
+
+
 @pytest.fixture
 def scene(doc):
     """An active document with undo; afterwards no dialog."""
@@ -250,11 +292,18 @@ def test_panel_takes_a_selected_bspline_face_as_the_free_form_side(scene, artifa
     image = screenshot(doc, os.path.join(artifacts, "blend_user_ring_zebra.png"))
     dark, white = stripe_pixels(image)
     assert dark > 5000 and white > 5000, (dark, white)
+    assert c2_jump(blend.Shape) < 1e-8
     panel.interface.setCurrentIndex(2)  # Start: the ring is then far from the interface, still C2
-    assert blend.Interface == "Start"
+    assert blend.Interface == "Start" and blend.Status == "ok", blend.Status
+    assert c2_jump(blend.Shape) < 1e-8
     panel.interface.setCurrentIndex(0)
     panel.default_ring.click()
     assert blend.FreeForm is None and blend.Patches == default
+    blend.Naive = True  # the referee sees a joint that is not C2: the naive strip's
+    doc.recompute()
+    assert blend.Status == "ok" and c2_jump(blend.Shape) > 1e-3, blend.Status
+    blend.Naive = False
+    doc.recompute()
     panel.reject()
     gui().updateGui()
     assert blend.FreeForm is None

@@ -3,7 +3,6 @@ share their edges (no sewing), the shell is closed around the axis for a full tu
 for BRepCheck, its faces are the patches bit for bit, the whole result crosses into
 FreeCAD once, and the steep cone of issue 13 is quick."""
 import math
-import time
 
 import pytest
 
@@ -156,18 +155,23 @@ def test_the_whole_result_crosses_into_freecad_once(monkeypatch):
     assert len(result.patches) > 50 and result.surface is not None and result.shell.isValid()
 
 
-def test_steep_cone_of_issue_13_is_quick_and_valid():
-    # Slope 1e12, heights 0, 1, 2, three arcs around: sewing its patches took 10-16 s.
+def test_steep_cone_of_issue_13_makes_a_valid_shell_without_sewing(monkeypatch):
+    # Slope 1e12, heights 0, 1, 2, three arcs around: sewing its patches took 10-16 s. The
+    # kernel's shell from the grid is required (as in BlendShell.SteepConeBuildsAValidShell),
+    # in one hand-over, and Part's sewing (the fallback without the bridge) fails if called;
+    # its time is measured by bench/bench_blend.py and bench_blend.cpp.
+    def never(*args, **kwargs):
+        pytest.fail("the steep cone's shell was sewn by Part")
+
+    monkeypatch.setattr(fw.kernel, "blend_result_arrays", never)
+    adopted = []
+    adopt = fw.kernel.adopt
+    monkeypatch.setattr(fw.kernel, "adopt", lambda capsule: adopted.append(capsule) or adopt(capsule))
     cone = S.Cone((0, 0, 0), 1.0, 1e12, [0, 2 * math.pi / 3, 4 * math.pi / 3, 2 * math.pi], [0.0, 1.0, 2.0])
-    start = time.perf_counter()
-    try:
-        result = fw.blend_basic_shape(cone)
-    except fw.InputError as error:
-        assert "patch" in str(error)
-    else:
-        assert result.shell.isValid()
-        assert len(result.shell.getFreeEdges().Edges) == 2 * len(result.surface.getUKnots()) - 2
-    assert time.perf_counter() - start < 2.0
+    result = fw.blend_basic_shape(cone)
+    assert len(adopted) == 1
+    assert result.shell.isValid()
+    assert len(result.shell.getFreeEdges().Edges) == 2 * len(result.surface.getUKnots()) - 2
 
 
 def test_shell_failures_name_the_patch_and_the_cause():

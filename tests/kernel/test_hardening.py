@@ -3,7 +3,6 @@ kernel (InputError instead of NaN poles that Part would call valid); scale-free 
 where the meaning does not depend on scale; OCCT failures and unbounded curves as
 InputError; bounded work. Each test here failed before its fix."""
 import math
-import time
 
 import numpy as np
 import pytest
@@ -89,10 +88,10 @@ def test_unbounded_curves_are_named_and_asked_to_be_trimmed(curve):
 
 
 def test_the_grid_baseline_has_a_smallest_step():
-    start = time.perf_counter()
+    # Refused by name. That it is refused up front, before the search tries one grid point,
+    # is counted in work units in C++ (Hardening.TooFineAGridIsRefusedBeforeItsSearch).
     with pytest.raises(fw.InputError, match=r"grid step must be in \[0.01, 0.5\]"):
         fw.monotone_curvature_solution((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="grid", grid_step=1e-3)
-    assert time.perf_counter() - start < 1.0  # refused up front, not after minutes of search
     assert fw.monotone_curvature_solution((0, 0), (1, 0), (1, 0.5), (0.8, 0.6), method="grid", grid_step=0.05)
 
 
@@ -119,27 +118,35 @@ def test_basic_curve_messages_name_the_real_problem():
         fw.basic.LineSegment((1, 2, 3), (1, 2, 3))
 
 
-def test_a_blend_says_its_cost_up_front():
+def test_a_blend_says_its_cost_up_front(monkeypatch):
     """Issue 13: blends of about 400 arcs took 30-76 s; a partition beyond MAX_PATCHES is
-    refused at once, with its size."""
+    refused at once, with its size: before any blend is built (every kernel blend fails
+    if it is called at all)."""
     from freecad_workbench.blend import MAX_PATCHES
 
+    def never(*args, **kwargs):
+        pytest.fail("a blend was built before the partition's cost was refused")
+
+    blends = [name for name in dir(fw.kernel) if name.startswith("blend_") and name != "blend_result"]
+    assert "blend_sphere_zone" in blends
+    for name in blends:
+        monkeypatch.setattr(fw.kernel, name, never)
     n = MAX_PATCHES // 2 + 1
     zone = fw.shapes.SphereZone((0, 0, 0), 10, np.linspace(0, 2 * math.pi, n + 1), [-0.5, 0, 0.5])
-    start = time.perf_counter()
-    with pytest.raises(fw.InputError, match=f"this partition has {n} arcs around and 2 pieces .* {2 * n} patches"):
-        fw.blend_basic_shape(zone)
-    assert time.perf_counter() - start < 1.0
+    for continuity in ("C2", "C1"):
+        with pytest.raises(fw.InputError,
+                           match=f"this partition has {n} arcs around and 2 pieces .* {2 * n} patches"):
+            fw.blend_basic_shape(zone, continuity=continuity)
 
 
-def test_approximation_error_of_many_marks_is_quick():
-    """Issue 13: 2000 marks took 15 s (a Python loop per sample point); the measure is the same."""
+def test_approximation_error_of_many_marks_is_the_same_measure():
+    """Issue 13: 2000 marks took 15 s (a Python loop per sample point); all samples are now
+    evaluated at once, and the measure is the same. Its time is measured by
+    bench/bench_design_recompute.py, not asserted here."""
     arc = fw.basic.CircleArc((0, 0, 0), 10, 0, 3)
     few = fw.approximation_error(arc, [0.2, 0.4, 0.6, 0.8])
     assert few.cubic_position < 1e-9  # a circle arc is kept exact between its marks
-    start = time.perf_counter()
     many = fw.approximation_error(arc, [i / 2001 for i in range(1, 2001)])
-    assert time.perf_counter() - start < 10.0
     assert many.cubic_position < 1e-9 and many.quintic_position < 1e-9
 
 

@@ -74,12 +74,24 @@ def test_changing_the_tolerance_recomputes_with_fewer_poles(doc):
 
 
 def test_given_noise_is_used(doc):
+    # The same points with two given noise levels: two different fits, each within the
+    # tolerance (a feature that ignored Noise would fit both alike).
     pts = scan()
-    fit = make_fair_fit(doc, [cloud(doc, pts)], tolerance=0.2, noise=0.0)
-    assert fit.Noise.Value == 0.0 and STATUS.match(fit.Status)  # 0: estimated
-    fit.Noise = 0.004
-    doc.recompute()
-    assert STATUS.match(fit.Status), fit.Status
+    tol = 0.2
+    source = cloud(doc, pts)
+    fit = make_fair_fit(doc, [source], tolerance=tol, noise=0.0)
+    assert fit.Noise.Value == 0.0 and STATUS.match(fit.Status), fit.Status  # 0: estimated
+    curves = {}
+    for noise in (0.004, 0.04):
+        fit.Noise = noise
+        doc.recompute()
+        assert STATUS.match(fit.Status), fit.Status
+        curves[noise] = curve_of(fit)
+        assert within(curves[noise], pts, tol)[0]
+    a, b = curves[0.004], curves[0.04]
+    apart = max(a.value(a.FirstParameter + (a.LastParameter - a.FirstParameter) * t).distanceToPoint(
+        b.value(b.FirstParameter + (b.LastParameter - b.FirstParameter) * t)) for t in np.linspace(0, 1, 201))
+    assert a.getPoles() != b.getPoles() and apart > 1e-6 * size_of(pts), apart
 
 
 def test_bad_input_keeps_the_last_shape_and_says_why(doc):
@@ -123,6 +135,18 @@ def test_save_close_reopen_recompute_gives_the_same_curve(doc, tmp_path):
 
 
 def test_convex_scan_size_is_scale_free(doc):
+    # The same scan from 1 mm to 100 m across, each fit at a thousandth of its size: convex,
+    # within its tolerance, and the same curve scaled (as many poles, the poles scaled).
     pts = scan(2000)
-    fit = make_fair_fit(doc, [cloud(doc, pts)], tolerance=1e-3 * size_of(pts))
-    assert sign_changes(signed_curvatures(curve_of(fit))) == 0
+    fits = {}
+    for scale in (0.01, 1.0, 1000.0):
+        scaled = pts * scale
+        tol = 1e-3 * size_of(scaled)
+        curve = curve_of(make_fair_fit(doc, [cloud(doc, scaled, f"Scan{len(fits)}")], tolerance=tol,
+                                       name=f"Fit{len(fits)}"))
+        assert sign_changes(signed_curvatures(curve)) == 0, scale
+        assert within(curve, scaled, tol)[0], scale
+        fits[scale] = np.array([tuple(p) for p in curve.getPoles()]) / scale
+    for scale, poles in fits.items():
+        assert poles.shape == fits[1.0].shape, scale
+        np.testing.assert_allclose(poles, fits[1.0], rtol=0, atol=1e-6 * size_of(pts), err_msg=str(scale))

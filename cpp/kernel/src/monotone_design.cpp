@@ -15,6 +15,7 @@
 #include "finite.hpp"
 #include "monotone_common.hpp"
 #include "monotone_detail.hpp"
+#include "work_budget.hpp"
 
 namespace fairsplines {
 
@@ -207,6 +208,7 @@ MonotonicityCertificate certifyNormalized(const std::array<Vec2, 5>& c) {
 /// The paper's grid search (Algorithm 2) in the normalized frame; M = (a, 0).
 /// Reading (README): C_1 = (t_1 C4.x, 0), i.e. the bounds 0 < t_1 < 1/6 and 3 t_1 < t_2x are
 /// in units of C4.x, the foot of C4 on the start tangent (with C_1 = t_1 M no t_1 < 1/6 works).
+/// Each point tried is a unit of work (detail::WorkBudget; free without a budget).
 std::optional<std::array<Vec2, 5>> gridSearch(const Vec2& P, double a, double step, int& tried) {
   const Vec2 M(a, 0.0);
   const double eps = 1e-12;
@@ -223,6 +225,7 @@ std::optional<std::array<Vec2, 5>> gridSearch(const Vec2& P, double a, double st
           const double t2y = iy * step;
           const std::array<Vec2, 5> c = {Vec2::Zero(), C1, Vec2(t2x * P.x(), t2y * P.y()), C3, P};
           ++tried;
+          detail::WorkBudget::spend(1.0);
           if (theorem1Both(c)) return c;
         }
       }
