@@ -445,7 +445,7 @@ private:
     // Outer passes: the constraints hold each sample at its foot's parameter, so a pass may
     // not slide the curve along itself; the samples are projected again (their new feet) and
     // the next pass starts from there, while the energy still drops by 1 %.
-    const int passes = cf.feet.size() > 100000 ? 1 : 4;
+    const int passes = cf.feet.size() > 100000 ? 1 : 3;
     BSplineCurve best = curve;
     std::vector<Foot> bestFeet;
     double bestDev = maxDev, lastEnergy = HUGE_VAL;

@@ -276,12 +276,18 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   double rho = trace / dataTrace;
   Eigen::MatrixX3d fixedRhs;
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
+  // The data term's Gram matrix, span by span: G_j = sum over the samples on span j of N N^T.
+  std::vector<Eigen::Matrix4d> G(m, Eigen::Matrix4d::Zero());
+  for (Index i = 0; i < nq; ++i) {
+    const Eigen::Vector4d N(rows[i].N.data());
+    G[rows[i].span].noalias() += N * N.transpose();
+  }
   auto factor = [&]() {
     Triplets t = et;
-    for (Index i = 0; i < nq; ++i)
+    t.reserve(et.size() + 16 * static_cast<std::size_t>(m));
+    for (Index j = 0; j < m; ++j)
       for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-          t.emplace_back(S.pole(rows[i].span, r), S.pole(rows[i].span, c), rho * rows[i].N[r] * rows[i].N[c]);
+        for (int c = 0; c < 4; ++c) t.emplace_back(S.pole(j, r), S.pole(j, c), rho * G[j](r, c));
     SparseMatrix A(np, np);
     A.setFromTriplets(t.begin(), t.end());
     ldlt.compute(reduce(A, number, nf, P, fixedRhs));
@@ -293,7 +299,7 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   Eigen::MatrixX3d X = P;
   // At most about 4 10^6 sample updates a call: 200 iterations up to 2 10^4 samples, fewer
   // (down to 20) on more. An update costs about a sixteenth of a projection (the budget's unit).
-  const int rounds = std::clamp(static_cast<int>(4e6 / static_cast<double>(nq)), 20, f.rounds);
+  const int rounds = std::clamp(static_cast<int>(2e6 / static_cast<double>(nq)), 20, f.rounds);
   for (int it = 0; it < rounds; ++it) {
     detail::WorkBudget::spend(static_cast<double>(nq) / 16.0);
     f.roundsUsed = it + 1;
