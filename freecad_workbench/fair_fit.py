@@ -47,13 +47,24 @@ class FairFitReport:
     corners: Tuple[int, ...] = ()  #: the input points found to be sharp corners (numbered from 0)
     pinned: int = 0  #: samples the curve was made to pass through where the csr-spline relaxes (FAIR_FIT.md, step 8)
     pieces: int = 1  #: curves returned (corners="keep": one per stretch between corners)
+    corners_smoothed: bool = False  #: corners="smooth" fitted one smooth curve through the corners found
 
     def status(self, unit: str = "mm") -> str:
         """The one-line summary a feature shows, e.g. "ok: 42 poles, largest deviation 0.0093 mm, 0 curvature
         sign changes"."""
         changes = "curvature sign change" if self.sign_changes == 1 else "curvature sign changes"
-        return (f"ok: {self.poles} poles, largest deviation {self.max_deviation:.3g} {unit}, "
+        text = (f"ok: {self.poles} poles, largest deviation {self.max_deviation:.3g} {unit}, "
                 f"{self.sign_changes} {changes}")
+        if self.merged_points:
+            text += f", {self.merged_points} repeated {'point' if self.merged_points == 1 else 'points'} merged"
+        if self.pieces > 1:
+            corners = "corner" if len(self.corners) == 1 else "corners"
+            text += f", {self.pieces} edges meeting at {len(self.corners)} {corners}"
+        elif self.corners_smoothed:
+            text += f", {len(self.corners)} {'corner' if len(self.corners) == 1 else 'corners'} smoothed over"
+        elif self.corners:  # closed data with one corner: fitted from it round to it
+            text += f", corner at point {self.corners[0] + 1} kept"
+        return text
 
 
 def _direction(value, name, dim):
@@ -94,6 +105,7 @@ def _call(points, tolerance, closed, noise, start_tangent, end_tangent, start_cu
         corners=tuple(int(i) for i in result["corners"]),
         pinned=int(result["pinned"]),
         pieces=len(pieces),
+        corners_smoothed=corners == "smooth" and bool(result["corners"]),
     )
     if corners == "keep":
         import Part

@@ -472,9 +472,7 @@ TEST(FairFit, SamplesOfAnySizeFitAsAtSizeOne) {
     so.tolerance = o.tolerance * s;
     const FairFitResult r = fairFitReport(q * s, so);
     EXPECT_EQ(r.curve.poles.rows(), one.curve.poles.rows());
-    // The fairing under the tolerance is iterative (ADMM): the rounding of q * s (s is not a
-    // power of two) may end it one extremum apart.
-    EXPECT_LE(std::abs(r.curvatureExtrema - one.curvatureExtrema), 1);
+    EXPECT_EQ(r.curvatureExtrema, one.curvatureExtrema);
     EXPECT_LE(r.maxDeviation, so.tolerance);
     BSplineCurve back = r.curve;
     back.poles /= s;

@@ -27,6 +27,10 @@ _PROPERTIES = (
      "0: estimated from the data (residuals of local quadratic fits)", 0.0, 0),
     ("App::PropertyBool", "Closed", "Fit a closed (periodic) curve", False, 0),
     ("App::PropertyInteger", "Samples", "Points taken from each source edge", 200, 0),
+    ("App::PropertyEnumeration", "Corners",
+     "Sharp corners of the points (a turn at one point, such as a trailing edge): Refuse (say where, fit nothing), "
+     "Keep (one edge per stretch between corners, meeting at the corners), Smooth (one smooth curve through them)",
+     "Refuse", 0),
     ("App::PropertyString", "Status",
      "'ok' with the number of poles, the largest deviation and the curvature sign changes, "
      "or why the last recompute failed", "ok", 1),
@@ -39,9 +43,10 @@ class FairFit(FeatureProxy):
     (eq. (6)) of an adaptive subset of noise-smoothed points, within Tolerance of all."""
 
     Type = "FairFit"
-    VERSION = 1
+    VERSION = 2  # 2: Corners (issue 25)
     GROUP = "Fair fit"
     PROPERTIES = _PROPERTIES
+    ENUMERATIONS = {"Corners": ("Refuse", "Keep", "Smooth")}
 
     def build(self, obj):
         origins = []
@@ -52,11 +57,12 @@ class FairFit(FeatureProxy):
             raise InputError(f"Tolerance must be more than 0 mm, got {tolerance:g} mm")
         try:
             points, origins = collect_points(obj.Sources, obj.Samples, obj.Closed)
-            curve, report = fair_fit_report(points, tolerance, closed=obj.Closed, noise=noise if noise > 0 else None)
+            curve, report = fair_fit_report(points, tolerance, closed=obj.Closed, noise=noise if noise > 0 else None,
+                                            corners=str(obj.Corners).lower())
         except Exception as exc:
             raise InputError(_describe(exc, origins)) from exc
         self._status = report.status("mm")
-        return curve.toShape()
+        return curve if obj.Corners == "Keep" else curve.toShape()
 
     def execute(self, obj):
         self._status = "ok"
@@ -64,7 +70,8 @@ class FairFit(FeatureProxy):
         set_if_changed(obj, "Status", self._status)
 
 
-def make_fair_fit(doc, sources, tolerance=0.1, noise=None, closed=False, samples=200, name="FairFit"):
+def make_fair_fit(doc, sources, tolerance=0.1, noise=None, closed=False, samples=200, corners="Refuse",
+                  name="FairFit"):
     """Create a fair fit in `doc` and recompute, as one undoable step.
 
     sources: as make_csr_fit's (an object, ``(obj, "Vertex1")`` or ``(obj, ["Edge1", ...])``).
@@ -80,6 +87,7 @@ def make_fair_fit(doc, sources, tolerance=0.1, noise=None, closed=False, samples
         obj.Noise = 0.0 if noise is None else float(noise)
         obj.Closed = bool(closed)
         obj.Samples = int(samples)
+        obj.Corners = corners
         attach_view_provider(obj, "ViewProviderFairFit")
         doc.recompute()
     return obj

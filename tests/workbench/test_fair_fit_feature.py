@@ -150,3 +150,31 @@ def test_convex_scan_size_is_scale_free(doc):
     for scale, poles in fits.items():
         assert poles.shape == fits[1.0].shape, scale
         np.testing.assert_allclose(poles, fits[1.0], rtol=0, atol=1e-6 * size_of(pts), err_msg=str(scale))
+
+
+def test_corners_refused_kept_or_smoothed_as_the_feature_says(doc):
+    """Issue 25: a profile with a sharp corner. Refuse (the default) keeps no shape and names
+    the corner in Status; Keep gives two edges meeting at the corner, each within the
+    tolerance (OCCT's distance); Smooth one edge, Status saying the corner was smoothed over."""
+    import math
+
+    a = [(1 + math.cos(t), math.sin(t), 0.0) for t in np.linspace(math.pi, math.pi / 2, 60)]
+    b = [(2 + math.cos(t), 1 + math.sin(t), 0.0) for t in np.linspace(math.pi, 1.5 * math.pi, 60)[1:]]
+    pts = Points.Points()
+    pts.addPoints([FreeCAD.Vector(*p) * 10 for p in a + b])
+    cloud = doc.addObject("Points::Feature", "Profile")
+    cloud.Points = pts
+    doc.recompute()
+    fit = make_fair_fit(doc, [cloud], tolerance=0.01)
+    assert "sharp corner at point 59" in fit.Status, fit.Status
+    fit.Corners = "Keep"
+    doc.recompute()
+    assert fit.Status.startswith("ok:") and "2 edges meeting at 1 corner" in fit.Status, fit.Status
+    assert len(fit.Shape.Edges) == 2 and fit.Shape.isValid()
+    corner = FreeCAD.Vector(10, 10, 0)
+    assert (fit.Shape.Edges[0].Vertexes[-1].Point - corner).Length <= 1e-9
+    for p in a + b:
+        assert fit.Shape.distToShape(Part.Vertex(FreeCAD.Vector(*p) * 10))[0] <= 0.01 * (1 + 1e-9)
+    fit.Corners = "Smooth"
+    doc.recompute()
+    assert len(fit.Shape.Edges) == 1 and "1 corner smoothed over" in fit.Status, fit.Status

@@ -326,9 +326,10 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
       dual = std::max(dual, (zNew - z[i]).norm());
       z[i] = zNew;
     }
-    dual *= rho;
-    // Converged to 1e-2 of the tolerance: the step below keeps the rest feasible.
-    if (primal <= 1e-2 * f.tolerance && dual <= 1e-2 * f.tolerance * rho) break;
+    // Converged to 1e-2 of the tolerance: the step below keeps the rest feasible. (Both
+    // residuals are lengths here, the dual one as the change of z, so the balance below is
+    // the same at every size of the data.)
+    if (primal <= 1e-2 * f.tolerance && dual <= 1e-2 * f.tolerance) break;
     if (it % 10 == 9 && (primal > 10.0 * dual || dual > 10.0 * primal)) {
       const double grow = primal > dual ? 2.0 : 0.5;
       rho *= grow;
