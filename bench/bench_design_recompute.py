@@ -3,7 +3,7 @@ marks after one mark moves (what a slider move does), beside the same-run cost o
 nearest OCCT route in FreeCAD (each piece to a B-spline, joined by
 Part.BSplineCurve.join, which is GeomConvert_CompCurveToBSplineCurve: G1 joins).
 
-    /usr/bin/python3 bench/bench_design_recompute.py
+    /usr/bin/python3 bench/bench_design_recompute.py [smoke]
 """
 import math
 import os
@@ -67,4 +67,4 @@ def main(repeats=301):
 
 
 if __name__ == "__main__":
-    main()
+    main(11 if sys.argv[1:] == ["smoke"] else 301)  # smoke: `make bench-smoke`, a few recomputes
