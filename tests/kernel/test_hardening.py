@@ -152,3 +152,12 @@ def test_a_curve_that_does_not_move_is_refused_not_returned_as_a_point():
             call()
     involute = fw.basic.CircleInvolute((0, 0, 0), 2, 0, 3)  # starts with zero speed (a cusp): still a curve
     assert fw.design_spline([(involute, [0.25, 0.5, 0.75])]).NbPoles > 4
+
+
+def test_approximation_error_where_occt_has_no_curvature_is_a_finite_figure():
+    """Issue 26: a rational cubic with weights 3.965 and 1e12 let OCCT's
+    LProp_CLProps::CurvatureNotDefined escape as Part.OCCError; where OCCT has no curvature it
+    counts as undefined (as at a cusp), and the figures are finite."""
+    curve = fw.basic.RationalCubic([(0, 0, 0), (1, 0, 0)], weights=[3.965, 1e12])
+    error = fw.approximation_error(curve, [0.5])
+    assert all(math.isfinite(x) for x in error)
