@@ -2,7 +2,8 @@
 // Every hand-over to OpenCASCADE (toOcct, the csr fast route, the blend patches) checks
 // its numbers here; inputs whose results overflow or vanish in double precision raise
 // InputError naming what was being built, instead of returning NaN poles that Part
-// would still call valid.
+// would still call valid. Shapes are the last step: requireValidShape (finite.cpp) refuses
+// a shape that BRepCheck calls not valid where it leaves the kernel.
 #pragma once
 #include <Eigen/Core>
 #include <algorithm>
@@ -14,7 +15,15 @@
 #include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
 
+class TopoDS_Shape;
+
 namespace fairsplines {
+
+/// Throw InputError unless OCCT's BRepCheck_Analyzer calls the shape valid (the shapes the
+/// kernel hands over: the blend shells and faces, csr edges): "<what>: ... is not a valid
+/// shape (BRepCheck: <status>) ...", naming the first sub-shape at fault and the scale of
+/// the input that put it there. Defined in finite.cpp.
+void requireValidShape(const TopoDS_Shape& shape, const std::string& what);
 
 /// The first item of a (a row of a matrix, an entry of a vector) holding a NaN or an
 /// infinity, or -1. Works on any expression (blocks, maps), whatever its storage order.
