@@ -254,8 +254,8 @@ void requireSeparateParameters(const double* t, Eigen::Index count, Eigen::Index
         << ") differ by less than 1e-12 of the parameters' range (0 to " << t[count - 1] << ", over " << count - 1
         << " segments), which the curve's knots cannot hold";
   }
-  msg << "; an interpolating spline passes through every sample, so leave one of them out, or fit the points "
-         "with the fair fit (fw.fair_fit), which merges such neighbours";
+  msg << "; the csr-spline has a knot at every sample, so leave one of them out, or fit the points with the "
+         "fair fit (fw.fair_fit), which chooses its points and merges such neighbours";
   throw InputError(msg.str());
 }
 

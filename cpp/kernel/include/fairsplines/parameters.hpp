@@ -52,7 +52,7 @@ public:
 /// Throws InputError as validateSamples.
 double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
 
-/// The knots an interpolating cubic through n samples gets from its parameters t (count =
+/// The knots a cubic with a knot at each of n samples gets from its parameters t (count =
 /// n, n + 1 when closed: t[n] closes the loop) must be separate (finite.hpp's rule: a gap
 /// above 1e-12 of the parameter range and above 8 ulps of its size). Checked before the
 /// knots are used: throws InputError naming the two samples (or, when `given`, the two
