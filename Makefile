@@ -18,7 +18,7 @@ FUZZ_SEED    ?=
 SANITIZED_CMAKE = -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
                   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g"
 
-.PHONY: deps deps-sanitizers build install demo test test-cpp test-python run bench clean \
+.PHONY: deps deps-sanitizers build install demo test test-cpp test-python run bench bench-smoke clean \
         test-freecad-1.0 test-freecad-1.1 test-matrix translations fuzz test-sanitize lint \
         format format-check deps-format
 
@@ -78,6 +78,19 @@ bench: build
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py
+
+# Every benchmark at its smallest size with few repeats (issue 26): only that each still runs
+# to its end, in under 2 minutes; the figures mean nothing. .ci/run runs it.
+bench-smoke: build
+	$(BUILD)/bench/bench_csr smoke
+	$(BUILD)/bench/bench_design smoke
+	$(BUILD)/bench/bench_blend smoke
+	$(BUILD)/bench/bench_monotone smoke
+	$(BUILD)/bench/bench_fair_blend smoke
+	$(BUILD)/bench/bench_fair_fit 1000
+	$(PYTHON) bench/bench_handover.py smoke
+	$(PYTHON) bench/bench_design_recompute.py smoke
+	$(PYTHON) bench/bench_blend.py smoke
 
 # The kernel instrumented for libFuzzer (-fsanitize=address,undefined,fuzzer-no-link) and
 # the harnesses; each runs FUZZ_SECONDS from its seed corpus fuzz/corpus/<harness>/.

@@ -21,7 +21,9 @@ Seam deviations (both methods, same sampling): along the zone's top edge and the
 bottom edge, the position gap, the angle between normals (G1) and the jump of normal
 curvature in the cross direction (G2), evaluated by OCCT (Surface.parameter, getDN).
 
-    xvfb-run -a /usr/bin/python3 bench/bench_blend.py
+    xvfb-run -a /usr/bin/python3 bench/bench_blend.py [smoke]
+
+(smoke: 3 recomputes, for `make bench-smoke`.)
 
 For whole-process timing from outside (the machine is shared: the operating system's CPU
 accounting of a finished process is what a loaded machine inflates least), the same calls
@@ -305,4 +307,4 @@ if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "--loop":
         loop(sys.argv[2], int(sys.argv[3]))
     else:
-        main()
+        main(3 if sys.argv[1:] == ["smoke"] else 30)  # smoke: `make bench-smoke`, 3 recomputes

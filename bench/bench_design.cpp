@@ -22,7 +22,8 @@
 using namespace fairsplines;
 using fairsplines::bench::medianSeconds;
 
-int main() {
+int main(int argc, char** argv) {
+  const bool smoke = fairsplines::bench::smokeRun(argc, argv);  // make bench-smoke: few repeats
   const double pi = std::acos(-1.0);
   // Quarter circle (1,0)->(0,1), line to (-2,1), quarter circle to (-3,0), line to (-3,-2).
   const Frame xy{};
@@ -49,8 +50,8 @@ int main() {
     joined.Add(GeomConvert::CurveToBSplineCurve(GC_MakeSegment(gp_Pnt(-3, 0, 0), gp_Pnt(-3, -2, 0)).Value()), 1e-7);
     poles += joined.BSplineCurve()->NbPoles();
   };
-  const int repeats = 2001;
-  for (int w = 0; w < 200; ++w) {  // warm-up
+  const int repeats = smoke ? 21 : 2001;
+  for (int w = 0; w < (smoke ? 5 : 200); ++w) {  // warm-up
     design();
     occt();
   }

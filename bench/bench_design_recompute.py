@@ -5,7 +5,7 @@ Part.BSplineCurve.join, which is GeomConvert_CompCurveToBSplineCurve: G1 joins);
 fw.approximation_error of a circle arc with 2000 marks (issue 13: 15-25 s with a Python
 loop per sample point; tests/kernel/test_hardening.py checks its measure, not its time).
 
-    /usr/bin/python3 bench/bench_design_recompute.py
+    /usr/bin/python3 bench/bench_design_recompute.py [smoke]
 """
 import math
 import os
@@ -74,4 +74,4 @@ def main(repeats=301):
 
 
 if __name__ == "__main__":
-    main()
+    main(11 if sys.argv[1:] == ["smoke"] else 301)  # smoke: `make bench-smoke`, a few recomputes

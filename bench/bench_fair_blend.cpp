@@ -23,6 +23,7 @@
 #include "fairsplines/errors.hpp"
 #include "fairsplines/fair_blend.hpp"
 #include "fairsplines/monotone.hpp"
+#include "bench_timing.hpp"
 #include "clothoid_arcs.hpp"
 
 using namespace fairsplines;
@@ -180,10 +181,11 @@ int quinticExtrema(const Local& l, double k0, double k1) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  const int count = fairsplines::bench::smokeRun(argc, argv) ? 25 : 1000;  // make bench-smoke: 25 arcs
   std::mt19937 rng(2026);
   std::vector<test::Arc> arcs;
-  for (int i = 0; i < 1000; ++i) arcs.push_back(test::randomArc(rng, i % 2 == 1));
+  for (int i = 0; i < count; ++i) arcs.push_back(test::randomArc(rng, i % 2 == 1));
 
   // OCCT's sign for Angle2: the one that reproduces a symmetric arc's end tangent.
   const Local symmetric{1.0, 0.5, -0.5};
@@ -228,19 +230,20 @@ int main() {
     bezierMax = std::max(bezierMax, extrema);
   }
   std::vector<double> spanValues(spans.begin(), spans.end());
-  std::printf("Fair G1 blends on 1000 random clothoid arcs (5-300 degrees, C and S, 3D planes)\n");
+  std::printf("Fair G1 blends on %d random clothoid arcs (5-300 degrees, C and S, 3D planes)\n", count);
   std::printf("%-44s %9s %10s %10s %10s\n", "method", "monotone", "median", "p99", "spans");
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms %4.0f/%4.0f\n", "fairBlend (clothoid, certified C2 cubic)",
-              solved / 10.0, 1e3 * quantile(ours, 0.5), 1e3 * quantile(ours, 0.99), quantile(spanValues, 0.5),
+              100.0 * solved / count, 1e3 * quantile(ours, 0.5), 1e3 * quantile(ours, 0.99), quantile(spanValues, 0.5),
               quantile(spanValues, 1.0));
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (computed %.1f%%, meets the ends %.1f%%; Angle2 sign %+g)\n",
-              "OCCT FairCurve_MinimalVariation (G1)", occtMonotone / 10.0, 1e3 * quantile(occtTimes, 0.5),
-              1e3 * quantile(occtTimes, 0.99), occtComputed / 10.0, occtMatching / 10.0, angle2Sign);
+              "OCCT FairCurve_MinimalVariation (G1)", 100.0 * occtMonotone / count, 1e3 * quantile(occtTimes, 0.5),
+              1e3 * quantile(occtTimes, 0.99), 100.0 * occtComputed / count, 100.0 * occtMatching / count, angle2Sign);
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (of these, fairBlend solves %d)\n",
-              "the paper's single cubic (Algorithm 2)", paperSolved / 10.0, 1e3 * quantile(paperTimes, 0.5),
+              "the paper's single cubic (Algorithm 2)", 100.0 * paperSolved / count, 1e3 * quantile(paperTimes, 0.5),
               1e3 * quantile(paperTimes, 0.99), paperAlsoOurs);
   std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n",
-              "Bezier matching the end tangents (legs r/3)", bezierMonotone / 10.0, bezierTotal / 1000.0, bezierMax);
+              "Bezier matching the end tangents (legs r/3)", 100.0 * bezierMonotone / count,
+              bezierTotal / double(count), bezierMax);
   std::printf("median ratio OCCT / fairBlend: %.1fx\n\n", quantile(occtTimes, 0.5) / quantile(ours, 0.5));
 
   // G2: the same arcs with their end curvatures (chord frame: curvatures times r).
@@ -277,13 +280,13 @@ int main() {
   }
   std::printf("Fair G2 blends: the same arcs with their end curvatures\n");
   std::printf("%-44s %9s %10s %10s\n", "method", "monotone", "median", "p99");
-  std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms\n", "fairBlend (spiral, certified C2 cubic)", solved2 / 10.0,
+  std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms\n", "fairBlend (spiral, certified C2 cubic)", 100.0 * solved2 / count,
               1e3 * quantile(ours2, 0.5), 1e3 * quantile(ours2, 0.99));
   std::printf("%-44s %8.1f%% %8.3f ms %8.3f ms   (computed %.1f%%, meets the ends %.1f%%; curvature sign %+g)\n",
-              "OCCT FairCurve_MinimalVariation (G2)", occt2Monotone / 10.0, 1e3 * quantile(occt2, 0.5),
-              1e3 * quantile(occt2, 0.99), occt2Computed / 10.0, occt2Matching / 10.0, curvatureSign);
+              "OCCT FairCurve_MinimalVariation (G2)", 100.0 * occt2Monotone / count, 1e3 * quantile(occt2, 0.5),
+              1e3 * quantile(occt2, 0.99), 100.0 * occt2Computed / count, 100.0 * occt2Matching / count, curvatureSign);
   std::printf("%-44s %8.1f%%   curvature extrema: mean %.2f, at most %d\n", "quintic Bezier matching the end 2-jets",
-              quinticMonotone / 10.0, quinticTotal / 1000.0, quinticMax);
+              100.0 * quinticMonotone / count, quinticTotal / double(count), quinticMax);
 
   // The slow inputs of issue 13 (10 s to minutes before the work budget; about half a second
   // each since): Hardening.Slow* in test_hardening.cpp, the same ends.

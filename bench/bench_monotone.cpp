@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fairsplines/monotone.hpp"
+#include "bench_timing.hpp"
 #include "test_support.hpp"
 
 using namespace fairsplines;
@@ -57,8 +58,8 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-int main() {
-  const int count = 1000;
+int main(int argc, char** argv) {
+  const int count = fairsplines::bench::smokeRun(argc, argv) ? 25 : 1000;  // make bench-smoke: 25 conditions
   const std::vector<test::EndCondition> ends = test::randomAdmissibleEnds(count, 20261124);
   std::printf(
       "Algorithm 2 on %d random admissible end conditions (random positions, orientations, mirror\n"

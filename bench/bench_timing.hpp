@@ -2,9 +2,14 @@
 #pragma once
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <vector>
 
 namespace fairsplines::bench {
+
+/// `make bench-smoke` runs every benchmark with the argument "smoke": its smallest size with
+/// few repeats, only to show that it still runs to its end (the figures mean nothing then).
+inline bool smokeRun(int argc, char** argv) { return argc > 1 && std::strcmp(argv[1], "smoke") == 0; }
 
 using Clock = std::chrono::steady_clock;
 

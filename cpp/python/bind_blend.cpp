@@ -231,8 +231,7 @@ void bindBlend(py::module_& m) {
               } catch (const InputError&) {
                 // not a C2 (C1) tensor grid (e.g. the naive baseline): no single surface
               }
-              if (!surface.IsNull())
-                builder.Add(compound, BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face());
+              if (!surface.IsNull()) builder.Add(compound, validFace(surface, "the single surface of the complex"));
             }
             return py::reinterpret_steal<py::object>(newShapeCapsule(new TopoDS_Shape(compound)));
           },

@@ -151,7 +151,7 @@ void bindDesign(py::module_& m) {
       "face_capsule",
       [](const BSplineSurface& surface) {
         return py::reinterpret_steal<py::object>(
-            newShapeCapsule(new TopoDS_Shape(BRepBuilderAPI_MakeFace(toOcct(surface), Precision::Confusion()).Face())));
+            newShapeCapsule(new TopoDS_Shape(validFace(toOcct(surface), "the B-spline surface's face"))));
       },
       "surface"_a, "A capsule owning a new TopoDS_Face of the surface, for occ_bridge.adopt_shape (kernel.adopt).");
 }

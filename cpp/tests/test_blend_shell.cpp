@@ -3,6 +3,7 @@
 // failure named.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
@@ -22,7 +23,9 @@
 #include "fairsplines/blend_c1.hpp"
 #include "fairsplines/blend_surface.hpp"
 #include "fairsplines/errors.hpp"
+#include "fairsplines/surfaces.hpp"
 #include "blend_test_support.hpp"
+#include "finite.hpp"
 
 using namespace fairsplines;
 using namespace fairsplines::test::blend;
@@ -277,4 +280,39 @@ TEST(BlendShell, SteepConeBuildsAValidShell) {
   EXPECT_EQ(use[2], K * (R - 1) + K * R);  // every other side shared by its two patches
   EXPECT_EQ(use[3], 0);
   EXPECT_LT(built.maxGap, 1e-15 * 1e13);  // rounding of coordinates near 2e12
+}
+
+TEST(BlendShell, ShapesFarFromTheOriginLeaveTheKernelValidAndInvalidOnesAreRefusedByName) {
+  // Issue 26: a face of a patch of a sphere zone 1e12 from the origin (10 across) left the
+  // kernel (fw.shapes.*.patches(), fw.revolve_profile) with edges at Precision::Confusion(),
+  // 1e-7, below what coordinates of 1e12 can tell apart (1.2e-4): BRepCheck called it not
+  // valid. Faces now get the shell's edge tolerance (about 100 rounding units of their
+  // largest coordinate) and are checked where they leave (validFace, requireValidShape).
+  ShapeFrame far;
+  far.origin = Eigen::Vector3d(1e12, 0.0, 0.0);
+  const G2Surface zone = sphereZone(far, 10.0, nonUniformTurn(), vec({-0.5, 0.2, 0.7}));
+  for (int i = 0; i < zone.nu; ++i) {
+    for (int j = 0; j < zone.nv; ++j) {
+      const TopoDS_Face face = validFace(patchToOcct(zone, i, j), "a patch");
+      EXPECT_TRUE(BRepCheck_Analyzer(face).IsValid()) << i << " " << j;
+    }
+  }
+  // The blend of the same zone: its shell and its single surface's face.
+  const BlendComplex c =
+      blendSphereZone(far, 10.0, nonUniformTurn(), vec({-0.5, 0.2, 0.7}), CircleReparam::Rho, nullptr, true);
+  EXPECT_TRUE(BRepCheck_Analyzer(blendShell(c).shell).IsValid());
+  EXPECT_TRUE(BRepCheck_Analyzer(validFace(singleSurface(c), "the single surface")).IsValid());
+  // The rule itself: a face OCCT calls not valid (the far patch with edges at 1e-7) is refused,
+  // naming the face and the scale.
+  const TopoDS_Face tight = BRepBuilderAPI_MakeFace(patchToOcct(zone, 0, 0), 1e-7).Face();
+  ASSERT_FALSE(BRepCheck_Analyzer(tight).IsValid());
+  try {
+    requireValidShape(tight, "the tight face");
+    ADD_FAILURE() << "an invalid face passed";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the tight face: face 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("not a valid shape"), std::string::npos) << what;
+    EXPECT_NE(what.find("1e+12"), std::string::npos) << what;
+  }
 }

@@ -166,6 +166,50 @@ TEST(Csr, BadInputThrowsNamedInputError) {
   EXPECT_NE(message(wide).find("2 or 3 coordinates"), std::string::npos);
 }
 
+TEST(Csr, NeighboursTooCloseAlongLongDataAreRefusedUpFrontNamingTheSamples) {
+  // Issue 26: data that go round and round (2000 samples a radian apart on a unit circle,
+  // 1900 long in a box 2.8 wide) with one sample 1e-10 from the one before: far from
+  // coinciding in the box (1e-12 of 2.8), but their knots would be closer than 1e-12 of the
+  // parameter range. Refused before the fit (chordal parameters), naming the samples and the
+  // fair fit, on every route: the windowed pass (open, 128 points or more), the reference
+  // (closed), given parameters, and the fit straight into OCCT.
+  const int n = 2000, k = 1000;
+  PointMatrix q(n, 2);
+  for (int i = 0; i < n; ++i) q.row(i) << std::cos(i), std::sin(i);
+  q.row(k + 1) = q.row(k) + Eigen::RowVector2d(1e-10, 0.0);
+  const std::string samples = "samples " + std::to_string(k) + " and " + std::to_string(k + 1);
+  for (bool closed : {false, true}) {
+    CsrOptions options;
+    options.closed = closed;
+    std::string what = "no error";
+    try {
+      csrSpline(q, options);
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    EXPECT_NE(what.find(samples), std::string::npos) << closed << ": " << what;
+    EXPECT_NE(what.find("fw.fair_fit"), std::string::npos) << what;
+    EXPECT_THROW(csrSplineOcct(q, options), InputError);
+  }
+  // Parameters given that close: named as parameters.
+  CsrOptions given;
+  given.parameters = Eigen::VectorXd::LinSpaced(n, 0.0, 1.0);
+  given.parameters[k + 1] = given.parameters[k] + 1e-15;
+  std::string what = "no error";
+  try {
+    csrSpline(q, given);
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("parameters " + std::to_string(k) + " and " + std::to_string(k + 1)), std::string::npos) << what;
+  // The centripetal and uniform parametrizations put them 1e-5 and 1 apart: those curves are fitted.
+  for (Parametrization kind : {Parametrization::Centripetal, Parametrization::Uniform}) {
+    CsrOptions other;
+    other.parametrization = kind;
+    EXPECT_EQ(csrSplineOcct(q, other)->NbPoles(), n + 2);
+  }
+}
+
 TEST(Csr, FusedOcctRouteIsBitExact) {
   // csrSplineOcct builds the same Geom_BSplineCurve as toOcct(csrSpline(...)), bit for bit,
   // also when its reused memory shrinks and grows between calls.

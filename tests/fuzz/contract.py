@@ -97,6 +97,8 @@ def _check_part(value, path):
         _finite_numbers(value.getWeights(), f"{path} weights")
         _finite_numbers(value.getUKnots(), f"{path} u knots")
         _finite_numbers(value.getVKnots(), f"{path} v knots")
+        if path.count("[") <= 1 and "." not in path:  # a surface returned (or in a returned list)
+            _check_face_of(value, path)
     elif hasattr(value, "toShape") and hasattr(value, "FirstParameter"):  # lines, conics, their arcs
         if True:
             _finite_numbers((value.FirstParameter, value.LastParameter), f"{path} parameters")
@@ -107,6 +109,21 @@ def _check_part(value, path):
     else:
         return False
     return True
+
+
+def _check_face_of(surface, path):
+    """Issue 26: a surface the API returns makes a face BRepCheck calls valid, with edges at
+    Precision::Confusion() or, far from the origin, at about 100 rounding units of its largest
+    coordinate (the kernel's rule for the faces it hands over: 1e-7 is below what coordinates
+    of 1e12 tell apart)."""
+    face = surface.toShape()
+    if face.isValid():
+        return
+    box = face.BoundBox
+    magnitude = max(abs(box.XMin), abs(box.YMin), abs(box.ZMin), abs(box.XMax), abs(box.YMax), abs(box.ZMax))
+    face.fixTolerance(max(1e-7, 1e-14 * magnitude))
+    if not face.isValid():
+        raise ContractError(f"{path}: its face is not valid (BRepCheck), even with edges at 1e-14 of its coordinates")
 
 
 def check_value(value, path="result", depth=0):

@@ -19,7 +19,10 @@ numbers = st.one_of(st.sampled_from(SPECIAL),
                     st.floats(allow_nan=True, allow_infinity=True),
                     st.floats(-10, 10),
                     st.integers(-5, 5))
-finite = st.one_of(st.sampled_from([0.0, 1.0, -1.0, 0.5, 2.0, 1e-9, 1e6, 1e-300, 1e300]), st.floats(-100, 100))
+# 1e12 and -1e12: coordinates far from the origin for a shape of size 1 (issue 26: faces BRepCheck
+# called not valid were returned as success).
+finite = st.one_of(st.sampled_from([0.0, 1.0, -1.0, 0.5, 2.0, 1e-9, 1e6, 1e12, -1e12, 1e-300, 1e300]),
+                   st.floats(-100, 100))
 
 
 def maybe_junk(strategy, junk_weight=1):
@@ -151,6 +154,9 @@ def sample_curves():
     tiny.buildFromPolesMultsKnots([V(0, 0, 0), V(1e-300, 0, 0), V(1e-300, 1e-300, 0), V(0, 2e-300, 0)], [4, 4],
                                   [0, 1], False, 3)
     out.append(tiny)
+    far = bs.copy()
+    far.translate(V(1e12, 0, 0))
+    out.append(far)  # 1e12 from the origin, 4 long (issue 26: revolve_profile made a face BRepCheck refused)
     rational = Part.BSplineCurve()
     rational.buildFromPolesMultsKnots([V(1, 0, 0), V(1, 1, 0), V(0, 1, 0)], [3, 3], [0, 1], False, 2, [1, 0.7071, 1])
     out.append(rational)
@@ -190,6 +196,8 @@ BASIC_SAMPLES = {  # class name -> keyword arguments of a valid instance
     "ParabolaArc": dict(vertex=(0, 0, 0), focal=1.0, t0=-1.0, t1=1.5),
     "HyperbolaArc": dict(center=(0, 0, 0), major_radius=1.0, minor_radius=2.0, t0=-1.0, t1=1.0),
     "RationalCubic": dict(poles=[(0, 0, 0), (1, 1, 0), (2, 1, 0), (3, 0, 0)], weights=[1, 2, 2, 1]),
+    # Issue 26: OCCT has no curvature where the weight 1e12 pulls the curve (CurvatureNotDefined escaped).
+    "RationalCubic heavy": dict(poles=[(0, 0, 0), (1, 0, 0)], weights=[3.965, 1e12]),
     "ArchimedeanSpiral": dict(),
     "CircleInvolute": dict(radius=1.0, t0=0.0, t1=2.0),
     "ParametricCurve": dict(function=lambda s: (s, s * s, 0.0), s0=0.0, s1=1.0),
@@ -199,7 +207,7 @@ BASIC_SAMPLES = {  # class name -> keyword arguments of a valid instance
 def basic_instance(name):
     import freecad_workbench as fw
 
-    return getattr(fw.basic, name)(**BASIC_SAMPLES[name])
+    return getattr(fw.basic, name.split()[0])(**BASIC_SAMPLES[name])
 
 
 basic_curve = st.sampled_from(sorted(BASIC_SAMPLES)).map(basic_instance)
@@ -228,6 +236,12 @@ SHAPE_SAMPLES = {  # a fresh valid shape each draw (set_control edits it)
     "Cone": lambda fw: fw.shapes.Cone((0, 0, 0), 1, 0.2, [0, 1, 2], [0, 1]),
     "Torus": lambda fw: fw.shapes.Torus((0, 0, 0), 3, 1, [0, 2, 4, 2 * math.pi], [0, 1, 2]),
     "Cylinder partial": lambda fw: fw.shapes.Cylinder((0, 0, 0), 1, [0, 1, 2], [0, 1, 2]),
+    # Issue 26: far from the origin, and of denormal size (faces BRepCheck refused were returned).
+    "SphereZone far": lambda fw: fw.shapes.SphereZone((1e12, 0, 0), 10, _LONGITUDES, [-0.5, 0.2, 0.7]),
+    "Torus far": lambda fw: fw.shapes.Torus((0, 0, 1e12), 3, 1, [0, 2, 4, 2 * math.pi], [0, 1, 2]),
+    "Cylinder far": lambda fw: fw.shapes.Cylinder((1e12, 1e12, 0), 1, _LONGITUDES, [0, 1, 2]),
+    "Cone tiny": lambda fw: fw.shapes.Cone((0, 0, 0), 5e-324, 0.2, [0, 1, 2], [0, 1]),
+    "SphereZone tiny": lambda fw: fw.shapes.SphereZone((0, 0, 0), 5e-324, _LONGITUDES, [-0.5, 0.2, 0.7]),
 }
 
 

@@ -125,6 +125,29 @@ def test_blend_shape_panel_fits_for_every_kind_and_partition(active, kind, unifo
     close(panel)
 
 
+@pytest.mark.parametrize("kind", SHAPE_KINDS)
+def test_blend_shape_spin_boxes_show_value_and_unit_whole(active, kind):
+    """Issue 26: in the side panel of the default layout the dimensions read "10.0000 r" for
+    10 mm (four decimals and the unit in some 60 px). Each spin box's text, as the panel shows
+    it in the main window, fits the box's edit field."""
+    from freecad_workbench.features.blend_shape import make_blend_shape
+    from freecad_workbench.gui.qt import QtWidgets
+
+    obj = make_blend_shape(active, kind)
+    panel = open_panel(obj)
+    gui().updateGui()
+    spins = [w for w in panel.widgets.values() if isinstance(w, QtWidgets.QDoubleSpinBox)]
+    assert spins
+    for spin in spins:
+        edit = spin.findChild(QtWidgets.QLineEdit)
+        metrics = edit.fontMetrics()
+        needed = metrics.horizontalAdvance(spin.text()) if hasattr(metrics, "horizontalAdvance") else \
+            metrics.width(spin.text())
+        room = edit.contentsRect().width() - 4  # QLineEdit's horizontal text margins, 2 px a side
+        assert needed <= room, f"{kind}: '{spin.text()}' needs {needed} px, its field shows {room}"
+    close(panel)
+
+
 def _design(doc):
     from freecad_workbench.features.design_spline import make_design_spline
 

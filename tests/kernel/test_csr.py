@@ -220,3 +220,27 @@ def test_input_error_is_a_value_error_and_other_bad_arguments():
         fw.csr_spline(q[:4], parameters=[0, 1, 1, 2])
     with pytest.raises(fw.InputError, match="leave it out for closed data"):
         fw.csr_spline(np.r_[q[:5], q[:1]], closed=True)
+
+
+def test_neighbours_too_close_along_the_data_are_refused_naming_them_and_the_fair_fit_fits_them():
+    """Issue 26: 2000 samples a radian apart on a unit circle (1900 long in a box 2.8 wide) with
+    one 1e-10 from the one before: not coincident in the box, but a spline through both would
+    have knots closer than 1e-12 of its parameter range. bench_csr's data died this way deep in
+    the fit ("knots ... are too close together"); now the samples are named up front, with the
+    way out, which works: the fair fit of such data (a half circle with a sample 3e-12 after
+    another) is a valid curve near every sample."""
+    n, k = 2000, 1000
+    q = np.c_[np.cos(np.arange(n)), np.sin(np.arange(n))]
+    q[k + 1] = q[k] + (1e-10, 0.0)
+    for closed in (False, True):
+        with pytest.raises(fw.InputError, match=f"samples {k} and {k + 1} are too close together along the data.*"
+                                                r"fw\.fair_fit"):
+            fw.csr_spline(q, closed=closed)
+    a = np.linspace(0, math.pi, 200)
+    half = np.c_[np.cos(a), np.sin(a)]
+    half = np.insert(half, 101, half[100] + (0.0, 3e-12), axis=0)
+    with pytest.raises(fw.InputError, match="samples 100 and 101 are too close together"):
+        fw.csr_spline(half)
+    fair = fw.fair_fit(half, 1e-4)
+    assert fair.toShape().isValid()
+    assert fw.max_distance(fair, half) <= 1e-4 * 1.01

@@ -159,3 +159,38 @@ def test_a_curve_that_does_not_move_is_refused_not_returned_as_a_point():
             call()
     involute = fw.basic.CircleInvolute((0, 0, 0), 2, 0, 3)  # starts with zero speed (a cusp): still a curve
     assert fw.design_spline([(involute, [0.25, 0.5, 0.75])]).NbPoles > 4
+
+
+def test_approximation_error_where_occt_has_no_curvature_is_a_finite_figure():
+    """Issue 26: a rational cubic with weights 3.965 and 1e12 let OCCT's
+    LProp_CLProps::CurvatureNotDefined escape as Part.OCCError; where OCCT has no curvature it
+    counts as undefined (as at a cusp), and the figures are finite."""
+    curve = fw.basic.RationalCubic([(0, 0, 0), (1, 0, 0)], weights=[3.965, 1e12])
+    error = fw.approximation_error(curve, [0.5])
+    assert all(math.isfinite(x) for x in error)
+
+
+@pytest.mark.parametrize("shape", ["zone", "torus", "cylinder"])
+def test_faces_of_shapes_far_from_the_origin_leave_the_kernel_valid(shape):
+    """Issue 26: the faces the kernel hands over for a shape 1e12 from the origin (its patches,
+    fw.revolve_profile's surface) had edges at 1e-7, below what such coordinates tell apart:
+    BRepCheck called them not valid, and they were returned as success. Judged by FreeCAD's
+    isValid (BRepCheck) of the faces handed over and of the blend's shell."""
+    from freecad_workbench import kernel
+
+    turn = [0, 1, 2.5, 4, 2 * math.pi]
+    s = {"zone": lambda: fw.shapes.SphereZone((1e12, 0, 0), 10, turn, [-0.5, 0.2, 0.7]),
+         "torus": lambda: fw.shapes.Torus((0, 0, 1e12), 3, 1, [0, 2, 4, 2 * math.pi], [0, 1, 2]),
+         "cylinder": lambda: fw.shapes.Cylinder((1e12, 1e12, 0), 1, turn, [0, 1, 2])}[shape]()
+    g2 = s.g2()
+    for i in range(g2.nu):
+        for j in range(g2.nv):
+            assert kernel.adopt(_kernel.face_capsule(g2.patch(i, j))).isValid(), (i, j)
+    assert len(s.patches()) == g2.nu * g2.nv
+    assert fw.blend_basic_shape(s).shell.isValid()
+    profile = Part.BSplineCurve()
+    profile.interpolate([V(0, 0, 0), V(1, 1, 0), V(2, 0, 0), V(3, 1, 0)])
+    profile.translate(V(1e12, 0, 0))
+    revolved = _kernel.revolve(kernel.from_part(profile), np.zeros(3), np.array([0.0, 0.0, 1.0]))
+    assert kernel.adopt(_kernel.face_capsule(revolved)).isValid()
+    assert isinstance(fw.revolve_profile(profile), Part.BSplineSurface)

@@ -14,6 +14,7 @@
 #include "bernstein.hpp"
 #include "blend_detail.hpp"
 #include "finite.hpp"
+#include "knot_removal.hpp"
 
 namespace fairsplines {
 
@@ -163,8 +164,10 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
     d = std::max(d, p.degreeU);
     e = std::max(e, p.degreeV);
   }
-  TColgp_Array2OfPnt poles(1, d * K + 1, 1, e * rows + 1);
-  TColStd_Array2OfReal weights(1, d * K + 1, 1, e * rows + 1);
+  // The homogeneous poles of the grid in Bezier form, one row per u index: row a holds
+  // (w x, w y, w z, w) of every v index b at columns 4 b .. 4 b + 3.
+  const Eigen::Index nu = d * K + 1, nv = e * rows + 1;
+  detail::PointRows grid = detail::PointRows::Zero(nu, 4 * nv);
   double size = 0.0;
   int seen = 0;
   for (const TaggedPatch& patch : complex.patches) {
@@ -176,52 +179,73 @@ Handle(Geom_BSplineSurface) singleSurface(const BlendComplex& complex, double to
         if (!(h[3] > 0)) throw InputError("a patch has a non-positive weight");
         const Eigen::Vector3d point = h.head<3>().transpose() / h[3];
         requireFinite(point, "the single surface of the complex", "poles");
-        poles.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, gp_Pnt(point.x(), point.y(), point.z()));
-        weights.SetValue(d * p.uPiece + a + 1, e * p.vPiece + b + 1, h[3]);
+        grid.block<1, 4>(d * p.uPiece + a, 4 * (e * p.vPiece + b)) = h;
         size = std::max(size, h.cwiseAbs().maxCoeff());
       }
     }
   }
   if (seen != K * rows) throw InputError("the complex is not a tensor grid of patches");
-  auto knots = [](const Eigen::VectorXd& t, int degree, TColStd_Array1OfReal& k, TColStd_Array1OfInteger& m) {
-    for (int i = 0; i < t.size(); ++i) {
-      k.SetValue(i + 1, t[i]);
-      m.SetValue(i + 1, i == 0 || i + 1 == t.size() ? degree + 1 : degree);
+  // C^smoothness where the multiplicities allow it: each interior knot down to degree -
+  // smoothness, by knot removal in one pass per direction (knot_removal.hpp: linear in the
+  // knots), first along u on whole rows of v poles, then along v on whole rows of u poles.
+  const int qu = std::max(d - smoothness, 0), qv = std::max(e - smoothness, 0);
+  const detail::KnotRemoval alongU = detail::removeKnotsBezier(grid, complex.knotsU, d, qu, tolerance * size);
+  if (alongU.failedKnot > 0) {
+    std::ostringstream os;
+    os << "the complex is not C" << smoothness << " across u knot " << alongU.failedKnot;
+    throw InputError(os.str());
+  }
+  const Eigen::Index NU = alongU.poles.rows();
+  detail::PointRows byV(nv, 4 * NU);
+  for (Eigen::Index a = 0; a < NU; ++a) {
+    for (Eigen::Index b = 0; b < nv; ++b) byV.block<1, 4>(b, 4 * a) = alongU.poles.block<1, 4>(a, 4 * b);
+  }
+  const detail::KnotRemoval alongV = detail::removeKnotsBezier(byV, complex.knotsV, e, qv, tolerance * size);
+  if (alongV.failedKnot > 0) {
+    std::ostringstream os;
+    os << "the complex is not C" << smoothness << " across v knot " << alongV.failedKnot
+       << " (basic rows only G2? use sexticInV)";
+    throw InputError(os.str());
+  }
+  const Eigen::Index NV = alongV.poles.rows();
+  TColgp_Array2OfPnt poles(1, static_cast<int>(NU), 1, static_cast<int>(NV));
+  TColStd_Array2OfReal weights(1, static_cast<int>(NU), 1, static_cast<int>(NV));
+  for (Eigen::Index a = 0; a < NU; ++a) {
+    for (Eigen::Index b = 0; b < NV; ++b) {
+      const Eigen::Vector4d h = alongV.poles.block<1, 4>(b, 4 * a).transpose();
+      const Eigen::Vector3d point = h.head<3>() / h[3];
+      requireFinite(Eigen::Vector4d(point.x(), point.y(), point.z(), h[3]), "the single surface of the complex",
+                    "poles after the knot removal");
+      if (!(h[3] > 0))
+        throw InputError("the single surface of the complex: a weight after the knot removal is not positive");
+      poles.SetValue(static_cast<int>(a) + 1, static_cast<int>(b) + 1, gp_Pnt(point.x(), point.y(), point.z()));
+      weights.SetValue(static_cast<int>(a) + 1, static_cast<int>(b) + 1, h[3]);
+    }
+  }
+  // Distinct knots with multiplicities degree + 1 at the ends and degree - smoothness inside
+  // (none inside when that is 0).
+  auto knots = [](const Eigen::VectorXd& t, int degree, int inner, TColStd_Array1OfReal& k,
+                  TColStd_Array1OfInteger& m) {
+    int n = 0;
+    for (Eigen::Index i = 0; i < t.size(); ++i) {
+      const bool end = i == 0 || i + 1 == t.size();
+      if (!end && inner == 0) continue;
+      ++n;
+      k.SetValue(n, t[i]);
+      m.SetValue(n, end ? degree + 1 : inner);
     }
   };
-  TColStd_Array1OfReal ku(1, K + 1), kv(1, rows + 1);
-  TColStd_Array1OfInteger mu(1, K + 1), mv(1, rows + 1);
-  knots(complex.knotsU, d, ku, mu);
-  knots(complex.knotsV, e, kv, mv);
+  const int ku_count = qu > 0 ? K + 1 : 2, kv_count = qv > 0 ? rows + 1 : 2;
+  TColStd_Array1OfReal ku(1, ku_count), kv(1, kv_count);
+  TColStd_Array1OfInteger mu(1, ku_count), mv(1, kv_count);
+  knots(complex.knotsU, d, qu, ku, mu);
+  knots(complex.knotsV, e, qv, kv, mv);
   Handle(Geom_BSplineSurface) s;
   try {
     s = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv, d, e);
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("OpenCASCADE rejected the single surface of the complex: ") +
                      failure.GetMessageString());
-  }
-  // C^smoothness where the multiplicities allow it: each interior knot down to degree - smoothness.
-  for (int i = 2; i <= K; ++i) {
-    if (!s->RemoveUKnot(i, std::max(d - smoothness, 0), tolerance * size)) {
-      std::ostringstream os;
-      os << "the complex is not C" << smoothness << " across u knot " << i - 1;
-      throw InputError(os.str());
-    }
-  }
-  for (int j = 2; j <= rows; ++j) {
-    if (!s->RemoveVKnot(j, std::max(e - smoothness, 0), tolerance * size)) {
-      std::ostringstream os;
-      os << "the complex is not C" << smoothness << " across v knot " << j - 1
-         << " (basic rows only G2? use sexticInV)";
-      throw InputError(os.str());
-    }
-  }
-  for (int i = 1; i <= s->NbUPoles(); ++i) {
-    for (int j = 1; j <= s->NbVPoles(); ++j) {
-      const gp_Pnt& p = s->Pole(i, j);
-      requireFinite(Eigen::Vector4d(p.X(), p.Y(), p.Z(), s->Weight(i, j)), "the single surface of the complex",
-                    "poles after the knot removal");
-    }
   }
   return s;
 }

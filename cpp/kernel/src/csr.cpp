@@ -192,6 +192,7 @@ void csrSplineAsGiven(PointsRef q, const CsrOptions& options, double* t, double*
             << ": their span is more than double precision holds";
         throw InputError(msg.str());
       }
+      requireSeparateParameters(given.data(), given.size(), n, true, "the csr-spline");
       const Eigen::VectorXd unit = (given.array() - t0) / span;
       cubicPolesInto(q, unit.data(), options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0,
                      poles);
@@ -199,10 +200,12 @@ void csrSplineAsGiven(PointsRef q, const CsrOptions& options, double* t, double*
       return;
     }
     parametersInto(t + 1, segments, options.parametrization, t);
+    requireSeparateParameters(t, segments + 1, n, false, "the csr-spline");
     cubicPolesInto(q, t, options.closed, size, options.epsilon, options.rule, false, std::nullopt, 0, poles);
     return;
   }
   csrOpenFusedInto(q, options, t, poles);
+  requireSeparateParameters(t, n, n, false, "the csr-spline");  // the knots, before they leave
 }
 
 }  // namespace

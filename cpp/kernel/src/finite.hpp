@@ -2,7 +2,8 @@
 // Every hand-over to OpenCASCADE (toOcct, the csr fast route, the blend patches) checks
 // its numbers here; inputs whose results overflow or vanish in double precision raise
 // InputError naming what was being built, instead of returning NaN poles that Part
-// would still call valid.
+// would still call valid. Shapes are the last step: requireValidShape (finite.cpp) refuses
+// a shape that BRepCheck calls not valid where it leaves the kernel.
 #pragma once
 #include <Eigen/Core>
 #include <algorithm>
@@ -14,7 +15,15 @@
 #include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
 
+class TopoDS_Shape;
+
 namespace fairsplines {
+
+/// Throw InputError unless OCCT's BRepCheck_Analyzer calls the shape valid (the shapes the
+/// kernel hands over: the blend shells and faces, csr edges): "<what>: ... is not a valid
+/// shape (BRepCheck: <status>) ...", naming the first sub-shape at fault and the scale of
+/// the input that put it there. Defined in finite.cpp.
+void requireValidShape(const TopoDS_Shape& shape, const std::string& what);
 
 /// The first item of a (a row of a matrix, an entry of a vector) holding a NaN or an
 /// infinity, or -1. Works on any expression (blocks, maps), whatever its storage order.
@@ -73,24 +82,33 @@ inline std::string exactNumber(double v) {
 /// short carry no digits of their own. Relative, so that 1e-300 and 1e300 are alike.
 constexpr double kRelativeKnotGap = 1e-12;
 
+/// The first i with knots[i - 1] and knots[i] too close together (or not increasing): a gap
+/// of at most kRelativeKnotGap of their range, of at most 8 ulps of their size, or denormal
+/// (OCCT's knot check, gp::Resolution, the smallest normal double, calls those too close);
+/// 0 if every gap is wider. The knots must be finite.
+inline Eigen::Index firstCloseKnot(const double* knots, Eigen::Index count) {
+  if (count < 2) return 0;
+  const double range = knots[count - 1] - knots[0];
+  for (Eigen::Index i = 1; i < count; ++i) {
+    const double a = knots[i - 1], b = knots[i], size = std::max(std::abs(a), std::abs(b));
+    const double ulp = std::nextafter(size, HUGE_VAL) - size;
+    const double gap = b - a;
+    if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp) || !(gap > std::numeric_limits<double>::min())) {
+      return i;
+    }
+  }
+  return 0;
+}
+
 /// Throw InputError unless the distinct knots increase by more than kRelativeKnotGap of
 /// their range and by more than 8 ulps of their size, naming the first pair too close.
 inline void requireSeparateKnots(const Eigen::VectorXd& knots, const std::string& what) {
   requireFinite(knots, what, "knots");
-  if (knots.size() < 2) return;
-  const double range = knots[knots.size() - 1] - knots[0];
-  for (Eigen::Index i = 1; i < knots.size(); ++i) {
-    const double a = knots[i - 1], b = knots[i], size = std::max(std::abs(a), std::abs(b));
-    const double ulp = std::nextafter(size, HUGE_VAL) - size;
-    const double gap = b - a;
-    // Spans of denormal size are refused too: OCCT's knot check (gp::Resolution, the smallest
-    // normal double) calls them too close.
-    if (!(gap > kRelativeKnotGap * range) || !(gap > 8.0 * ulp) || !(gap > std::numeric_limits<double>::min())) {
-      throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" + exactNumber(a) +
-                       " and " + exactNumber(b) +
-                       ") are too close together (or not increasing): their span is below the precision of the knots");
-    }
-  }
+  const Eigen::Index i = firstCloseKnot(knots.data(), knots.size());
+  if (i == 0) return;
+  throw InputError(what + ": knots " + std::to_string(i - 1) + " and " + std::to_string(i) + " (" +
+                   exactNumber(knots[i - 1]) + " and " + exactNumber(knots[i]) +
+                   ") are too close together (or not increasing): their span is below the precision of the knots");
 }
 
 /// Throw InputError unless the curve is one OpenCASCADE accepts and can work with: rows of 2

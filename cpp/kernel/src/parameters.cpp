@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "fairsplines/errors.hpp"
+#include "finite.hpp"
 #include "vectorise.hpp"
 
 namespace fairsplines {
@@ -236,6 +237,26 @@ void throwFirstCoincident(PointsRef q, Eigen::Index from, Eigen::Index to, doubl
     if (std::sqrt(squared) <= tol) throwCoincide(i, i + 1, false);
   }
   throw InputError("two consecutive points coincide");
+}
+
+void requireSeparateParameters(const double* t, Eigen::Index count, Eigen::Index n, bool given, const char* method) {
+  const Eigen::Index i = firstCloseKnot(t, count);
+  if (i == 0) return;
+  std::ostringstream msg;
+  msg.precision(17);
+  if (given) {
+    msg << method << ": parameters " << i - 1 << " and " << i << " (" << t[i - 1] << " and " << t[i]
+        << ") are too close together: their gap is below 1e-12 of the parameters' range (" << t[0] << " to "
+        << t[count - 1] << "), which the curve's knots cannot hold";
+  } else {
+    msg << method << ": samples " << i - 1 << " and " << (i == n ? 0 : i)
+        << " are too close together along the data: their parameters (" << t[i - 1] << " and " << t[i]
+        << ") differ by less than 1e-12 of the parameters' range (0 to " << t[count - 1] << ", over " << count - 1
+        << " segments), which the curve's knots cannot hold";
+  }
+  msg << "; the csr-spline has a knot at every sample, so leave one of them out, or fit the points with the "
+         "fair fit (fw.fair_fit), which chooses its points and merges such neighbours";
+  throw InputError(msg.str());
 }
 
 void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t) {

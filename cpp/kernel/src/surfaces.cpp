@@ -1,11 +1,17 @@
 #include "fairsplines/surfaces.hpp"
 
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRep_Builder.hxx>
 #include <Eigen/Geometry>
+#include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -124,6 +130,37 @@ Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface) {
   } catch (const Standard_Failure& failure) {
     throw InputError(std::string("OpenCASCADE rejected the B-spline surface: ") + failure.GetMessageString());
   }
+}
+
+TopoDS_Face validFace(const Handle(Geom_BSplineSurface)& surface, const std::string& what) {
+  TopoDS_Face face;
+  try {
+    // The tolerance of its edges: Precision::Confusion(), or about 100 rounding units of its
+    // largest coordinate far from the origin (as blendShell's edges), where 1e-7 is below
+    // what the coordinates can tell apart.
+    double magnitude = 0.0;
+    for (int i = 1; i <= surface->NbUPoles(); ++i) {
+      for (int j = 1; j <= surface->NbVPoles(); ++j) {
+        const gp_Pnt& p = surface->Pole(i, j);
+        magnitude = std::max({magnitude, std::abs(p.X()), std::abs(p.Y()), std::abs(p.Z())});
+      }
+    }
+    face = BRepBuilderAPI_MakeFace(surface, Precision::Confusion()).Face();
+    const double tolerance = 1e-14 * magnitude;
+    if (tolerance > Precision::Confusion()) {  // face <= edges <= vertices, as BRepCheck wants them
+      BRep_Builder builder;
+      builder.UpdateFace(face, tolerance);
+      for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next())
+        builder.UpdateEdge(TopoDS::Edge(e.Current()), tolerance);
+      for (TopExp_Explorer v(face, TopAbs_VERTEX); v.More(); v.Next()) {
+        builder.UpdateVertex(TopoDS::Vertex(v.Current()), tolerance);
+      }
+    }
+  } catch (const Standard_Failure& failure) {
+    throw InputError(what + ": OpenCASCADE made no face of it (" + failure.GetMessageString() + ")");
+  }
+  requireValidShape(face, what);  // the boundary rule (finite.hpp)
+  return face;
 }
 
 }  // namespace fairsplines

@@ -55,6 +55,30 @@ def compact(widget, width=SPIN_WIDTH):
     return widget
 
 
+_SHORT_SPIN_BOX = []
+
+
+def short_spin_box():
+    """A QDoubleSpinBox that shows its value without trailing zeros ("10 mm", "12.5 mm", not
+    "10.0000 mm"), at the precision of its decimals: in the side panel's 60-odd pixels of text,
+    a dimension with four decimals lost its unit ("10.0000 r", issue 26)."""
+    if not _SHORT_SPIN_BOX:
+        from ..qt import QtWidgets
+
+        class ShortSpinBox(QtWidgets.QDoubleSpinBox):
+            def textFromValue(self, value):
+                text = self.locale().toString(float(value), "f", self.decimals())
+                if not self.isGroupSeparatorShown():
+                    text = text.replace(self.locale().groupSeparator(), "")
+                point = self.locale().decimalPoint()
+                if point in text:
+                    text = text.rstrip("0").rstrip(point)
+                return "0" if text in ("-0", "") else text
+
+        _SHORT_SPIN_BOX.append(ShortSpinBox)
+    return _SHORT_SPIN_BOX[0]()
+
+
 def button_column(*widgets):
     """Buttons (or check boxes) one under the other: two side by side need 166 px or more
     with Qt6's Fusion style (80 px a button at least), too much beside a form's margins."""
@@ -184,10 +208,8 @@ class LiveEditPanel:
 
     def _spin(self, lower, upper, suffix="", decimals=4):
         """A spin box for a dimension: range, decimals, unit suffix; it reports a value
-        only when editing ends (no recompute per keystroke)."""
-        from ..qt import QtWidgets
-
-        spin = QtWidgets.QDoubleSpinBox()
+        only when editing ends (no recompute per keystroke); it shows no trailing zeros."""
+        spin = short_spin_box()
         spin.setRange(lower, upper)
         spin.setDecimals(decimals)
         spin.setSuffix(suffix)

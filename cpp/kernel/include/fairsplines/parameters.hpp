@@ -52,6 +52,15 @@ public:
 /// Throws InputError as validateSamples.
 double validateSamplesInto(PointsRef q, bool closed, int minPoints, const char* method, double* chords);
 
+/// The knots a cubic with a knot at each of n samples gets from its parameters t (count =
+/// n, n + 1 when closed: t[n] closes the loop) must be separate (finite.hpp's rule: a gap
+/// above 1e-12 of the parameter range and above 8 ulps of its size). Checked before the
+/// knots are used: throws InputError naming the two samples (or, when `given`, the two
+/// parameters) too close together along the data, and suggesting the fair fit, which merges
+/// such neighbours. Data that wander back and forth get there while no two consecutive
+/// samples come near coinciding in the bounding box (validateSamples' test).
+void requireSeparateParameters(const double* t, Eigen::Index count, Eigen::Index n, bool given, const char* method);
+
 /// parameters() into t (count + 1 values); chords may be t + 1 (computed in place).
 /// Throws nothing, as parameters().
 void parametersInto(const double* chords, Eigen::Index count, Parametrization kind, double* t);

@@ -3,6 +3,8 @@
 // profiles (the paper's "profile test").
 #pragma once
 #include <Geom_BSplineSurface.hxx>
+#include <TopoDS_Face.hxx>
+#include <string>
 
 #include "fairsplines/types.hpp"
 
@@ -38,5 +40,10 @@ BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisP
 
 /// Exact conversion; throws InputError when OCCT rejects the data.
 Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface);
+
+/// The face bounded by the surface's own boundary (BRepBuilderAPI_MakeFace), as it leaves the
+/// kernel: throws InputError naming `what` when OCCT's check (BRepCheck_Analyzer) calls it not
+/// valid, e.g. a surface 1e12 from the origin and 1 across, or of denormal size.
+TopoDS_Face validFace(const Handle(Geom_BSplineSurface)& surface, const std::string& what);
 
 }  // namespace fairsplines
