@@ -39,7 +39,11 @@ struct Subset {
 
 class FairFitter {
 public:
-  FairFitter(PointsRef q, const FairFitOptions& o) : q_(q), o_(o), S_(readSamples(q, o.closed)), dim_(q.cols()) {
+  FairFitter(PointsRef q, const FairFitOptions& o) : FairFitter(q, o, readSamples(q, o.closed)) {}
+  /// With the samples read and the noise estimated already (fitInput needs them for the
+  /// corners).
+  FairFitter(PointsRef q, const FairFitOptions& o, Samples S, std::optional<double> estimated = std::nullopt)
+      : q_(q), o_(o), S_(std::move(S)), dim_(q.cols()), estimated_(estimated) {
     const Ends ends = readOptions(o, dim_);
     startT_ = ends.startT, endT_ = ends.endT, startK_ = ends.startK, endK_ = ends.endK;
   }
@@ -70,7 +74,7 @@ public:
   FairFitResult run() {
     const double tau = o_.tolerance;
     const bool planarFits = dim_ == 2;
-    sigma_ = o_.noise ? *o_.noise : estimateNoise(S_, planarFits);
+    sigma_ = o_.noise ? *o_.noise : estimated_ ? *estimated_ : estimateNoise(S_, planarFits);
     plane_ = dataPlane(S_, static_cast<int>(dim_), std::max(0.5 * tau, 6.0 * sigma_));
     // Samples whose noise is below 1/100 of the tolerance are used as they are (on noise-free
     // data the "noise" estimated is the local quadratics' model error; smoothing would only
@@ -396,11 +400,9 @@ private:
     bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
     Thinning th = bounds;
-    std::vector<Foot> fitFeet = feet;  // the fit's, should the thinned curve not be taken
-    th.feet = std::move(feet);         // given back as they were when no knot is removed
+    th.feet = std::move(feet);  // given back as they were when no knot is removed
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const Handle(Geom_BSplineCurve) thinned = removeKnots(occ, th);
-    if (thinned == occ) th.feet = std::move(fitFeet);
     if (thinned != occ) {
       BSplineCurve c = fromOcct(thinned);
       c.poles = c.poles.leftCols(dim_).eval();
@@ -411,7 +413,7 @@ private:
         extrema = static_cast<int>(curvatureExtrema(profile).size());
         bounds.at = std::move(th.at);
       } else {
-        th.feet = std::move(fitFeet);  // the thinned curve's were on a curve not taken
+        th.feet.clear();  // on the thinned curve, not this one: the fairings project the samples themselves
       }
     }
     fairConstrained(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
@@ -599,6 +601,7 @@ private:
   FairFitOptions o_;
   Samples S_;
   Index dim_;
+  std::optional<double> estimated_;  // the noise, when estimated before
   std::optional<Vector3d> startT_, endT_, startK_, endK_;
   double sigma_ = 0.0;
   bool smooth_ = false;
@@ -644,7 +647,7 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
   FairFitOptions o = options;
   o.closed = M.closed;
   o.tolerance = options.tolerance - M.offset;  // a dropped point is within offset of the one kept
-  const Samples S = readSamples(M.q, M.closed);
+  Samples S = readSamples(M.q, M.closed);
   const double sigma = options.noise ? *options.noise : estimateNoise(S, q.cols() == 2);
   if (o.tolerance < sigma) {
     // A curve that close to every sample follows the noise: the fit would be met (step 8
@@ -665,7 +668,9 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
     return r;
   };
   using Corners = FairFitOptions::Corners;
-  if (corners.empty() || options.corners == Corners::Smooth) return finish(FairFitter(M.q, o).run());
+  if (corners.empty() || options.corners == Corners::Smooth) {
+    return finish(FairFitter(M.q, o, std::move(S), sigma).run());
+  }
   if (options.corners == Corners::Refuse && !(M.closed && corners.size() == 1)) {
     std::ostringstream msg;
     msg << "the points have a sharp corner at point " << M.origin[corners.front()];

@@ -252,8 +252,11 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
     Index span;
     std::array<double, 4> N;
   };
-  std::vector<Row> rows(nq);
-  std::vector<double> tau(nq);
+  auto rowOf = [&](Index i) {
+    Row r{std::clamp<Index>(f.feet[i].span, 0, m - 1), {}};
+    r.N = S.basis(r.span, f.feet[i].x);
+    return r;
+  };
   auto pointOf = [&](const Eigen::MatrixX3d& X, const Row& r) {
     Vector3d c = Vector3d::Zero();
     for (int k = 0; k < 4; ++k) c += r.N[k] * X.row(S.pole(r.span, k)).transpose();
@@ -261,12 +264,23 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   };
   double trace = 0.0, dataTrace = 0.0;
   for (Index i = 0; i < np; ++i) trace += E.coeff(i, i);
+  // ADMM works on about 4000 samples: every stride-th, and those already beyond half
+  // the tolerance (where the constraints bite). The step below checks all of them.
+  const Index stride = std::max<Index>(1, nq / 4000);
+  const double tauMin = f.tolerance * (1.0 - 1e-9);
+  std::vector<Index> act;  // the samples ADMM works on, with their rows and radii
+  std::vector<Row> rows;
+  std::vector<double> tau;
   for (Index i = 0; i < nq; ++i) {
-    rows[i] = {std::clamp<Index>(f.feet[i].span, 0, m - 1), {}};
-    rows[i].N = S.basis(rows[i].span, f.feet[i].x);
-    for (int k = 0; k < 4; ++k) dataTrace += rows[i].N[k] * rows[i].N[k];
-    tau[i] = std::max(f.tolerance * (1.0 - 1e-9), (pointOf(P, rows[i]) - q[f.sample[i]]).norm());
+    const Row r = rowOf(i);
+    const double d = (pointOf(P, r) - q[f.sample[i]]).norm();
+    if (i % stride != 0 && !(d > 0.5 * f.tolerance)) continue;
+    act.push_back(i);
+    rows.push_back(r);
+    tau.push_back(std::max(tauMin, d));
+    for (int k = 0; k < 4; ++k) dataTrace += r.N[k] * r.N[k];
   }
+  const Index na = static_cast<Index>(act.size());
   // ADMM on min E(P) subject to z_i = C(u_i) - q_i, |z_i| <= tau_i (Boyd et al., "Distributed
   // optimization and statistical learning via the alternating direction method of
   // multipliers", 2011, Section 5): the P-step solves (E + rho sum N N^T) P = rho sum N (q_i
@@ -278,9 +292,9 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   Eigen::SimplicialLDLT<SparseMatrix> ldlt;
   // The data term's Gram matrix, span by span: G_j = sum over the samples on span j of N N^T.
   std::vector<Eigen::Matrix4d> G(m, Eigen::Matrix4d::Zero());
-  for (Index i = 0; i < nq; ++i) {
-    const Eigen::Vector4d N(rows[i].N.data());
-    G[rows[i].span].noalias() += N * N.transpose();
+  for (const Row& r : rows) {
+    const Eigen::Vector4d N(r.N.data());
+    G[r.span].noalias() += N * N.transpose();
   }
   auto factor = [&]() {
     Triplets t = et;
@@ -294,19 +308,19 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
     return ldlt.info() == Eigen::Success;
   };
   if (!factor()) return;
-  std::vector<Vector3d> z(nq), w(nq, Vector3d::Zero());
-  for (Index i = 0; i < nq; ++i) z[i] = pointOf(P, rows[i]) - q[f.sample[i]];
+  std::vector<Vector3d> z(na), w(na, Vector3d::Zero());
+  for (Index a = 0; a < na; ++a) z[a] = pointOf(P, rows[a]) - q[f.sample[act[a]]];
   Eigen::MatrixX3d X = P;
   // At most about 4 10^6 sample updates a call: 200 iterations up to 2 10^4 samples, fewer
   // (down to 20) on more. An update costs about a sixteenth of a projection (the budget's unit).
-  const int rounds = std::clamp(static_cast<int>(2e6 / static_cast<double>(nq)), 20, f.rounds);
+  const int rounds = std::clamp(static_cast<int>(4e5 / static_cast<double>(na)), 20, f.rounds);
   for (int it = 0; it < rounds; ++it) {
-    detail::WorkBudget::spend(static_cast<double>(nq) / 16.0);
+    detail::WorkBudget::spend(static_cast<double>(na) / 16.0);
     f.roundsUsed = it + 1;
     Eigen::MatrixX3d b = Eigen::MatrixX3d::Zero(np, 3);
-    for (Index i = 0; i < nq; ++i) {
-      const Vector3d target = rho * (q[f.sample[i]] + z[i] - w[i]);
-      for (int r = 0; r < 4; ++r) b.row(S.pole(rows[i].span, r)) += rows[i].N[r] * target.transpose();
+    for (Index a = 0; a < na; ++a) {
+      const Vector3d target = rho * (q[f.sample[act[a]]] + z[a] - w[a]);
+      for (int r = 0; r < 4; ++r) b.row(S.pole(rows[a].span, r)) += rows[a].N[r] * target.transpose();
     }
     Eigen::MatrixX3d rhs = fixedRhs;
     for (Index i = 0; i < np; ++i)
@@ -317,14 +331,14 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
       if (number[i] >= 0) X.row(i) = x.row(number[i]);
     // The residuals: primal (C(u_i) - q_i leaving its ball) and dual (z moving).
     double primal = 0.0, dual = 0.0;
-    for (Index i = 0; i < nq; ++i) {
-      const Vector3d r = pointOf(X, rows[i]) - q[f.sample[i]], v = r + w[i];
+    for (Index a = 0; a < na; ++a) {
+      const Vector3d r = pointOf(X, rows[a]) - q[f.sample[act[a]]], v = r + w[a];
       const double len = v.norm();
-      const Vector3d zNew = len > tau[i] ? Vector3d(v * (tau[i] / len)) : v;
-      w[i] = v - zNew;
+      const Vector3d zNew = len > tau[a] ? Vector3d(v * (tau[a] / len)) : v;
+      w[a] = v - zNew;
       primal = std::max(primal, (r - zNew).norm());
-      dual = std::max(dual, (zNew - z[i]).norm());
-      z[i] = zNew;
+      dual = std::max(dual, (zNew - z[a]).norm());
+      z[a] = zNew;
     }
     // Converged to 1e-2 of the tolerance: the step below keeps the rest feasible. (Both
     // residuals are lengths here, the dual one as the change of z, so the balance below is
@@ -342,9 +356,11 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   const Eigen::MatrixX3d D = X - P;
   double alpha = 1.0;
   for (Index i = 0; i < nq; ++i) {
-    const Vector3d r = pointOf(P, rows[i]) - q[f.sample[i]], s = pointOf(D, rows[i]);
-    if ((r + s).norm() <= tau[i]) continue;
-    const double a = s.squaredNorm(), bb = 2.0 * r.dot(s), c = r.squaredNorm() - tau[i] * tau[i];
+    const Row row = rowOf(i);
+    const Vector3d r = pointOf(P, row) - q[f.sample[i]], s = pointOf(D, row);
+    const double t = std::max(tauMin, r.norm());
+    if ((r + s).norm() <= t) continue;
+    const double a = s.squaredNorm(), bb = 2.0 * r.dot(s), c = r.squaredNorm() - t * t;
     const double root = (-bb + std::sqrt(std::max(bb * bb - 4.0 * a * c, 0.0))) / (2.0 * a);
     alpha = std::min(alpha, std::max(root, 0.0));
   }
