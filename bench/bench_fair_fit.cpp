@@ -266,10 +266,28 @@ void realDataRow(const char* name, const PointMatrix& q, double tol) {
 int main(int argc, char** argv) {
   // Optional: the largest N to run (default 10^6), e.g. `bench_fair_fit 10000` for a quick look;
   // `bench_fair_fit N tight`: only the tight-tolerance table; `bench_fair_fit 0 real`: only
-  // the airfoil and road table.
+  // the airfoil and road table; `bench_fair_fit N fit`: the fair fit's time alone.
   const long maxN = argc > 1 ? std::atol(argv[1]) : 1000000;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // line by line, also into a file
   const bool realOnly = argc > 2 && std::string(argv[2]) == "real";
+  if (argc > 2 && std::string(argv[2]) == "fit") {  // the fair fit's time alone, 10^3 .. N samples
+    std::printf("fair fit alone (best of 3), the convex data below\n  %8s %10s %10s %8s %8s\n", "N", "time [ms]",
+                "no step 10", "poles", "extrema");
+    for (int n : {1000, 10000, 100000, 1000000}) {
+      if (n > maxN) break;
+      const PointMatrix q = samples(n, 1e-4, 7);
+      FairFitOptions o;
+      o.tolerance = 1e-3 * (q.colwise().maxCoeff() - q.colwise().minCoeff()).norm();
+      FairFitOptions plain = o;
+      plain.fairing = false;
+      FairFitResult r;
+      const double t = bestSeconds([&] { r = fairFitReport(q, o); }, 3);
+      const double t0 = bestSeconds([&] { fairFitReport(q, plain); }, 3);
+      std::printf("  %8d %10.1f %10.1f %8ld %8d\n", n, 1e3 * t, 1e3 * t0, static_cast<long>(r.curve.poles.rows()),
+                  r.curvatureExtrema);
+    }
+    return 0;
+  }
   if (argc <= 2 || realOnly) {
     std::printf("real data: NACA airfoils (Selig order, blunt trailing edge) and hairpin roads (10 m, 5 cm noise)\n");
     std::printf("  %-26s %8s %12s %8s %8s %12s\n", "method", "poles", "max dev", "sign ch", "extrema", "time [ms]");

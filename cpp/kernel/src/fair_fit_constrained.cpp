@@ -244,6 +244,7 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   f.energyBefore = f.energyAfter = energyOf(E, P);
   Index nf = 0;
   const std::vector<Index> number = freeNumbers(f.fixed, nf);
+  if (static_cast<Index>(f.fixed.size()) != np || static_cast<Index>(f.sample.size()) != nq) return;
   if (nf == 0 || nq == 0 || !(f.energyBefore > 0.0)) return;
 
   // The constraints: each sample's curve point C(u_i) = sum_r N_r P_(span, r) within tau_i of
