@@ -423,7 +423,8 @@ private:
   }
 
   /// Fairing under the tolerance (fair_fit_constrained.cpp): the poles move towards the least
-  /// third-derivative jump energy while every sample stays within the tolerance at its foot.
+  /// bending and third-derivative jump energy while every sample stays within the tolerance
+  /// at its foot.
   /// Verified over every sample (projected again from its foot on the new curve); taken when
   /// it has no more curvature sign changes and no more extrema. `feet` (at sample index -
   /// at0) become the new curve's when taken.
@@ -613,7 +614,7 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------
-// Real input: merged points, closed data, corners (fair_fit_input.cpp; docs/FAIR_FIT.md, step 1)
+// Real input: merged points, closed data, corners (fair_fit_input.cpp; docs/FAIR_FIT.md, step 0)
 
 /// The points of one stretch between corners (rows a .. b of q, b past the end wrapping round
 /// closed data), with midpoints added between the widest neighbours up to 4 points.

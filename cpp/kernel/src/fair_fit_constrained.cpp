@@ -49,28 +49,32 @@ std::array<double, 4> SplineSpace::basis(Index j, double x) const {
   return N;
 }
 
-std::array<std::array<double, 4>, 2> SplineSpace::secondDerivative(Index j) const {
+namespace {
+
+/// The second derivative's two poles on span j (its values at the span's ends; C'' is linear
+/// there) as weights of the span's four poles: de Boor's derivative poles, as spanPoly.
+std::array<Eigen::Vector4d, 2> secondDerivativePoles(const SplineSpace& S, Index j) {
   std::array<double, 6> k;
-  for (int r = 0; r < 6; ++r) k[r] = knot(j - 2 + r);
+  for (int r = 0; r < 6; ++r) k[r] = S.knot(j - 2 + r);
   using V = Eigen::Vector4d;
   const V d[4] = {V::Unit(0), V::Unit(1), V::Unit(2), V::Unit(3)};
   const V d1[3] = {3.0 * (d[1] - d[0]) / (k[3] - k[0]), 3.0 * (d[2] - d[1]) / (k[4] - k[1]),
                    3.0 * (d[3] - d[2]) / (k[5] - k[2])};
-  const V d2[2] = {2.0 * (d1[1] - d1[0]) / (k[3] - k[1]), 2.0 * (d1[2] - d1[1]) / (k[4] - k[2])};
-  return {std::array<double, 4>{d2[0][0], d2[0][1], d2[0][2], d2[0][3]},
-          std::array<double, 4>{d2[1][0], d2[1][1], d2[1][2], d2[1][3]}};
+  return {V(2.0 * (d1[1] - d1[0]) / (k[3] - k[1])), V(2.0 * (d1[2] - d1[1]) / (k[4] - k[2]))};
+}
+
+std::array<double, 4> toArray(const Eigen::Vector4d& v) { return {v[0], v[1], v[2], v[3]}; }
+
+}  // namespace
+
+std::array<std::array<double, 4>, 2> SplineSpace::secondDerivative(Index j) const {
+  const auto d2 = secondDerivativePoles(*this, j);
+  return {toArray(d2[0]), toArray(d2[1])};
 }
 
 std::array<double, 4> SplineSpace::thirdDerivative(Index j) const {
-  std::array<double, 6> k;
-  for (int r = 0; r < 6; ++r) k[r] = knot(j - 2 + r);
-  using V = Eigen::Vector4d;
-  const V d[4] = {V::Unit(0), V::Unit(1), V::Unit(2), V::Unit(3)};
-  const V d1[3] = {3.0 * (d[1] - d[0]) / (k[3] - k[0]), 3.0 * (d[2] - d[1]) / (k[4] - k[1]),
-                   3.0 * (d[3] - d[2]) / (k[5] - k[2])};
-  const V d2[2] = {2.0 * (d1[1] - d1[0]) / (k[3] - k[1]), 2.0 * (d1[2] - d1[1]) / (k[4] - k[2])};
-  const V d3 = (d2[1] - d2[0]) / (k[3] - k[2]);
-  return {d3[0], d3[1], d3[2], d3[3]};
+  const auto d2 = secondDerivativePoles(*this, j);
+  return toArray((d2[1] - d2[0]) / (knot(j + 1) - knot(j)));
 }
 
 Eigen::MatrixX3d polesOf(const BSplineCurve& curve) {
@@ -312,7 +316,7 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   std::vector<Vector3d> z(na), w(na, Vector3d::Zero());
   for (Index a = 0; a < na; ++a) z[a] = pointOf(P, rows[a]) - q[f.sample[act[a]]];
   Eigen::MatrixX3d X = P;
-  // At most about 4 10^6 sample updates a call: 200 iterations up to 2 10^4 samples, fewer
+  // At most about 4 10^5 sample updates a pass: 200 iterations up to 2000 samples, fewer
   // (down to 20) on more. An update costs about a sixteenth of a projection (the budget's unit).
   const int rounds = std::clamp(static_cast<int>(4e5 / static_cast<double>(na)), 20, f.rounds);
   for (int it = 0; it < rounds; ++it) {

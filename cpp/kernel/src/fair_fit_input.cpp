@@ -2,7 +2,7 @@
 // loops with the first point again at the end, points come out of order, and profiles have
 // corners (an airfoil's sharp trailing edge). The fit merges the first, recognises the
 // second, refuses the third by name, and finds the fourth so that a corner is kept as one
-// and never smoothed over silently. docs/FAIR_FIT.md, step 1.
+// and never smoothed over silently. docs/FAIR_FIT.md, step 0.
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
