@@ -67,7 +67,8 @@ register("quadratic_design", [S.points_arg], valid=GOOD_POINTS, kwargs=dict(FIT,
 # ---- fair fit -----------------------------------------------------------------------------
 TOLERANCE = st.one_of(st.floats(1e-3, 10.0), S.number_arg)
 FAIR = dict(closed=S.flag_arg, noise=st.one_of(st.none(), S.number_arg), start_tangent=st.one_of(st.none(),
-            S.vector_arg), end_tangent=st.one_of(st.none(), S.vector_arg))
+            S.vector_arg), end_tangent=st.one_of(st.none(), S.vector_arg),
+            corners=S.choice_arg("refuse", "keep", "smooth"))
 register("fair_fit", [S.points_arg, S.number_arg], valid=[S.good_points, st.floats(1e-2, 10.0)], kwargs=FAIR,
          examples=40)
 register("fair_fit_report", [S.points_arg, S.number_arg], valid=[S.good_points, st.floats(1e-2, 10.0)],
