@@ -194,8 +194,8 @@ def _end_jet(edge, u):
     return np.array([p.x, p.y, p.z]), t, k
 
 
-def fair_edge_report(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1",
-                     samples: Optional[int] = None) -> Tuple[Part.BSplineCurve, FairFitReport]:
+def fair_edge_report(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1", samples: Optional[int] = None,
+                     corners: str = "refuse") -> Tuple[Union[Part.BSplineCurve, Part.Wire], FairFitReport]:
     """fair_edge and its report."""
     import Part
 
@@ -206,11 +206,11 @@ def fair_edge_report(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G
     n = kernel.as_count(n, "samples", minimum=8)
     closed = bool(edge.isClosed()) and bool(getattr(edge.Curve, "isPeriodic", lambda: False)())
     try:
-        pts = np.array([(v.x, v.y, v.z) for v in edge.discretize(Number=n)], dtype=float)
+        pts = _samples_of(edge, n)
     except Part.OCCError as exc:
         raise InputError(f"the edge cannot be sampled ({exc}): is it degenerate or too large?") from None
     if closed:
-        return _call(pts[:-1], tol, True, tol / 4.0, None, None)
+        return _call(pts[:-1], tol, True, tol / 4.0, None, None, corners=corners)
     u0, u1 = edge.FirstParameter, edge.LastParameter
     if edge.Orientation == "Reversed":
         u0, u1 = u1, u0
@@ -223,7 +223,34 @@ def fair_edge_report(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G
     curvatures = (k0, k1) if clamp == "G2" else (None, None)
     # The original curve is the data: its wiggles below the tolerance are what fairing
     # removes, so the fit smooths as if the samples had noise of a quarter of the tolerance.
-    return _call(pts, tol, False, tol / 4.0, *tangents, *curvatures)
+    return _call(pts, tol, False, tol / 4.0, *tangents, *curvatures, corners=corners)
+
+
+def _kinks(edge):
+    """Parameters inside the edge where its B-spline curve is only C0 (a knot of multiplicity
+    at least the degree): where it may have a corner."""
+    curve = edge.Curve
+    if not hasattr(curve, "getMultiplicities"):
+        return []
+    u0, u1 = edge.FirstParameter, edge.LastParameter
+    return [u for u, m in zip(curve.getKnots(), curve.getMultiplicities()) if m >= curve.Degree and u0 < u < u1]
+
+
+def _samples_of(edge, n):
+    """n points equally spaced in arc length, each stretch between C0 knots on its own, so that
+    a kink is a sample (the fit finds a corner at a sample, FAIR_FIT.md step 0)."""
+    kinks = _kinks(edge)
+    if not kinks:
+        return np.array([(v.x, v.y, v.z) for v in edge.discretize(Number=n)], dtype=float)
+    bounds = [edge.FirstParameter] + kinks + [edge.LastParameter]
+    length = edge.Length
+    out = []
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        piece = edge.Curve.toShape(a, b)
+        count = max(2, int(round(n * piece.Length / length)))
+        points = [(v.x, v.y, v.z) for v in piece.discretize(Number=count)]
+        out.extend(points if not out else points[1:])
+    return np.array(out, dtype=float)
 
 
 def _pole_count(edge):
@@ -231,8 +258,8 @@ def _pole_count(edge):
     return curve.NbPoles if hasattr(curve, "NbPoles") else 20
 
 
-def fair_edge(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1",
-              samples: Optional[int] = None) -> Part.BSplineCurve:
+def fair_edge(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1", samples: Optional[int] = None,
+              corners: str = "refuse") -> Union[Part.BSplineCurve, Part.Wire]:
     """Fair an existing edge or curve within `tolerance` (as Rhino's Fair).
 
     The edge is sampled at `samples` points equally spaced in arc length (default: 50 per
@@ -240,7 +267,9 @@ def fair_edge(edge_or_curve: CurveLike, tolerance: float, clamp: str = "G1",
     wiggles smaller than the tolerance are smoothed away. Every sample stays within
     `tolerance` of the result. The end points are kept exactly (open edges); clamp="G1" also
     keeps the end tangent directions, "G2" also the end curvature vectors, "G0" only the
-    end points. A closed periodic edge gives a closed curve (no clamps).
+    end points. A closed periodic edge gives a closed curve (no clamps). A kink of the edge
+    (a sharp corner of a C0 curve) is refused, kept or smoothed over as fair_fit's `corners`
+    says.
     Raises InputError for anything but one bounded edge or curve, or a tolerance it cannot meet.
     """
-    return fair_edge_report(edge_or_curve, tolerance, clamp, samples)[0]
+    return fair_edge_report(edge_or_curve, tolerance, clamp, samples, corners)[0]

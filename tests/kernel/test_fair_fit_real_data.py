@@ -193,3 +193,23 @@ def test_fewer_curvature_extrema_than_occts_approximate_and_about_as_few_poles(d
 def test_size_of_is_the_referee_scale():
     # the tolerance tests above are absolute on a chord of 1
     assert abs(size_of(naca4("0012", 31)) - 1.0) < 0.01
+
+
+def test_fair_edge_of_a_kinked_edge_refuses_keeps_or_smooths_the_kink():
+    """A C0 B-spline edge with a kink (two quarter circles meeting at a right angle): fair_edge
+    refuses by default naming the corner, keeps it as two edges, or smooths it over."""
+    pts, corner = two_arcs_with_a_corner(40)
+    kinked = Part.BSplineCurve()
+    kinked.interpolate([vec(p) for p in pts[:corner + 1]])
+    second = Part.BSplineCurve()
+    second.interpolate([vec(p) for p in pts[corner:]])
+    joined = kinked.copy()
+    joined.join(second)  # one C0 curve with the kink at a knot
+    assert joined.Continuity == "C0"
+    with pytest.raises(fw.InputError, match="sharp corner"):
+        fw.fair_edge(joined, 1e-4, clamp="G0")
+    kept = fw.fair_edge(joined, 1e-4, clamp="G0", corners="keep")
+    assert isinstance(kept, Part.Wire) and len(kept.Edges) == 2
+    assert (kept.Edges[0].Vertexes[-1].Point - vec(pts[corner])).Length <= 1e-6
+    smooth = fw.fair_edge(joined, 1e-4, clamp="G0", corners="smooth")
+    assert isinstance(smooth, Part.BSplineCurve)
