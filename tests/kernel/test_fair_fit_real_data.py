@@ -213,3 +213,12 @@ def test_fair_edge_of_a_kinked_edge_refuses_keeps_or_smooths_the_kink():
     assert (kept.Edges[0].Vertexes[-1].Point - vec(pts[corner])).Length <= 1e-6
     smooth = fw.fair_edge(joined, 1e-4, clamp="G0", corners="smooth")
     assert isinstance(smooth, Part.BSplineCurve)
+
+
+def test_a_repeated_first_point_with_end_tangents_stays_open():
+    """End tangents ask for ends: the loop is fitted open, from the first point round to it."""
+    loop = ellipse(120, closed=True)
+    pts = np.vstack([loop, loop[:1]])
+    curve, report = fit_within(pts, 1e-4, start_tangent=(0, 1), end_tangent=(0, 1))
+    assert not report.closed and report.merged_points == 0 and not curve.isPeriodic()
+    assert (curve.value(curve.FirstParameter) - curve.value(curve.LastParameter)).Length <= 1e-12

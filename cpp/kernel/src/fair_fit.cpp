@@ -637,14 +637,8 @@ PointMatrix stretch(const PointMatrix& q, Index a, Index b) {
 /// closed data recognised, the order checked, corners refused, kept or smoothed over.
 FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
   const bool ends = options.startTangent || options.endTangent || options.startCurvature || options.endCurvature;
-  MergedInput M = mergeCoincident(q, options.closed, options.tolerance);
-  if (M.recognisedClosed && ends) {  // end conditions ask for open data: the repeat stays an end
-    M = mergeCoincident(q, options.closed, options.tolerance);
-    M.q.conservativeResize(M.q.rows() + 1, Eigen::NoChange);
-    M.q.row(M.q.rows() - 1) = q.row(q.rows() - 1);
-    M.origin.push_back(q.rows() - 1);
-    M.merged -= 1, M.closed = false, M.recognisedClosed = false;
-  }
+  // End conditions ask for open data: a last point repeating the first stays an end.
+  const MergedInput M = mergeCoincident(q, options.closed, options.tolerance, !ends);
   FairFitOptions o = options;
   o.closed = M.closed;
   o.tolerance = options.tolerance - M.offset;  // a dropped point is within offset of the one kept

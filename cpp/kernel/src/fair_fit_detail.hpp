@@ -39,8 +39,8 @@ Samples readSamples(PointsRef q, bool closed);
 // order along the curve checked, corners found
 
 /// The samples as the fit takes them: runs of consecutive points within `mergeDistance` of
-/// the run's first point are that one point (cyclically when closed); data whose last point
-/// repeats the first (within it) are closed.
+/// the run's first point are that one point; data whose last point repeats the first
+/// (within it) are closed, when `mayClose` (open data without end conditions) or closed.
 struct MergedInput {
   PointMatrix q;
   std::vector<Index> origin;  // the input row of each kept sample
@@ -53,7 +53,7 @@ struct MergedInput {
 /// Merge coincident and near-coincident neighbours: the merge distance is 1e-3 of the
 /// tolerance, at most 1e-9 of the data's size, at least 2e-12 of it (what validateSamples
 /// calls coincident). Throws as validateSamples for rows, columns and non-finite values.
-MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance);
+MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance, bool mayClose);
 
 /// Where the data turn sharply at one sample: a corner (a tangent discontinuity: the
 /// trailing edge of an airfoil, the corner of a profile). Samples i whose turn, the angle

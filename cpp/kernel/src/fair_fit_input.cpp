@@ -18,7 +18,7 @@ namespace fairsplines::detail::fairfit {
 // ---------------------------------------------------------------------------------------
 // Coincident points and closed data
 
-MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance) {
+MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance, bool mayClose) {
   const Index n = q.rows(), dim = q.cols();
   if (n < 4 || (dim != 2 && dim != 3) || !q.allFinite()) {
     validateSamples(q, closed, 4, "the fair fit");  // throws, naming what is wrong
@@ -44,7 +44,7 @@ MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance) {
     keep.push_back(i);
   }
   // The last point repeating the first: closed data (the repeat dropped).
-  if (keep.size() > 2) {
+  if (keep.size() > 2 && (closed || mayClose)) {
     const double d = (q.row(keep.back()) - q.row(keep.front())).norm();
     if (d <= delta) {
       out.offset = std::max(out.offset, d);
