@@ -269,17 +269,23 @@ void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFa
   };
   double trace = 0.0, dataTrace = 0.0;
   for (Index i = 0; i < np; ++i) trace += E.coeff(i, i);
-  // ADMM works on about 4000 samples: every stride-th, and those already beyond half
-  // the tolerance (where the constraints bite). The step below checks all of them.
+  // ADMM works on about 4000 samples, every stride-th, and on those already beyond half
+  // the tolerance (where the constraints bite), every nearStride-th of them so that they
+  // are about 16000 at most (a tight fit of 10^6 samples has a quarter beyond). The step
+  // below checks all of them.
   const Index stride = std::max<Index>(1, nq / 4000);
   const double tauMin = f.tolerance * (1.0 - 1e-9);
+  auto beyondHalf = [&](Index i) { return (pointOf(P, rowOf(i)) - q[f.sample[i]]).norm() > 0.5 * f.tolerance; };
+  Index near = 0;  // samples beyond half the tolerance, counted at every 64th
+  for (Index i = 0; i < nq; i += 64) near += beyondHalf(i) ? 64 : 0;
+  const Index nearStride = std::max<Index>(1, near / 16000);
   std::vector<Index> act;  // the samples ADMM works on, with their rows and radii
   std::vector<Row> rows;
   std::vector<double> tau;
   for (Index i = 0; i < nq; ++i) {
     const Row r = rowOf(i);
     const double d = (pointOf(P, r) - q[f.sample[i]]).norm();
-    if (i % stride != 0 && !(d > 0.5 * f.tolerance)) continue;
+    if (i % stride != 0 && !(d > 0.5 * f.tolerance && i % nearStride == 0)) continue;
     act.push_back(i);
     rows.push_back(r);
     tau.push_back(std::max(tauMin, d));

@@ -261,7 +261,7 @@ bool pinAtKnots(const SplineSpace& S, Eigen::MatrixX3d& P, const std::vector<std
 /// `tolerance` of their curve points C(u_i) (feet) are moved towards the minimum of the
 /// fairness energy E(P) = integral of |C''|^2 + sum_k |J_k|^2 hbar_k^3 (J_k the jump of C'''
 /// at knot t_k) subject to |C(u_i) - q_i| <= tolerance for every sample, found by ADMM on
-/// about 4000 of the samples. P moves from the feasible start towards it as far as every
+/// about 4000 of the samples and at most about 16000 of those beyond half the tolerance. P moves from the feasible start towards it as far as every
 /// constraint allows (they are convex in P, so the segment from a feasible P stays feasible
 /// up to the first one met): every sample stays within the tolerance at its own foot, and
 /// the result's distances do too (an upper bound). Returns the energy before and after.
