@@ -10,8 +10,10 @@ export QTWEBENGINE_DISABLE_SANDBOX=1
 
 # Sanitized builds with clang (fuzz/README.md): `make fuzz` runs every libFuzzer harness of
 # fuzz/ for FUZZ_SECONDS each; `make test-sanitize` runs the C++ tests under ASan + UBSan.
+# Both use one build (the kernel compiled once, with the fuzzer's coverage too), so CI
+# compiles the sanitized kernel once, not twice.
 FUZZ_BUILD   ?= build-fuzz
-ASAN_BUILD   ?= build-asan
+ASAN_BUILD   ?= $(FUZZ_BUILD)
 FUZZ_SECONDS ?= 30
 FUZZ_TIMEOUT ?= 5
 FUZZ_SEED    ?=
@@ -100,9 +102,10 @@ fuzz: deps-sanitizers
 	cmake --build $(FUZZ_BUILD) -j $(JOBS)
 	FUZZ_SEED=$(FUZZ_SEED) bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TIMEOUT)
 
-# The GoogleTest suite built with -fsanitize=address,undefined (UBSan does not recover).
+# The GoogleTest suite built with -fsanitize=address,undefined (UBSan does not recover), and
+# the corpus replayed by the harnesses (FuzzReplay.*), in the fuzz build.
 test-sanitize: deps-sanitizers
-	cmake -S . -B $(ASAN_BUILD) $(SANITIZED_CMAKE) -DFAIRSPLINES_SANITIZE=ON >/dev/null
+	cmake -S . -B $(ASAN_BUILD) $(SANITIZED_CMAKE) -DFAIRSPLINES_FUZZ=ON >/dev/null
 	cmake --build $(ASAN_BUILD) -j $(JOBS)
 	cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 	  ctest --output-on-failure
