@@ -96,6 +96,13 @@ cone = _kernel.cone
 torus = _kernel.torus
 ShapeOfRevolution = _kernel.ShapeOfRevolution
 G2Surface = _kernel.G2Surface
+BSplineCurve = _kernel.BSplineCurve  # a profile given as arrays (shapes.Revolution, the quadrics)
+BSplineSurface = _kernel.BSplineSurface  # a ring mapped back for an affine image (blend.py)
+RevolutionProfile = _kernel.RevolutionProfile
+revolution_profile = _kernel.revolution_profile
+revolution = _kernel.revolution
+shape_of_revolution = _kernel.shape_of_revolution
+affine_g2 = _kernel.affine_g2
 BlendComplex = _kernel.BlendComplex
 # Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
 ring_knots = _kernel.ring_knots
@@ -106,6 +113,8 @@ blend_torus = _kernel.blend_torus
 blend_chain = _kernel.blend_chain
 blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
+blend_shape = _kernel.blend_shape
+affine_complex = _kernel.affine_complex
 ring_knots_c1 = _kernel.ring_knots_c1
 blend_c1 = _kernel.blend_c1
 join_shapes_c1 = _kernel.join_shapes_c1
@@ -291,8 +300,9 @@ def surface_to_part(surface):
     return result
 
 
-def surface_from_part(surface):
-    """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact)."""
+def surface_from_part(surface, affine=None):
+    """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact); with
+    affine = (matrix, translation), its poles under p -> matrix p + translation."""
     import Part
 
     if isinstance(surface, Part.Shape):
@@ -305,6 +315,8 @@ def surface_from_part(surface):
     poles = np.array([[(p.x, p.y, p.z) for p in row] for row in surface.getPoles()], dtype=float)
     nu, nv = poles.shape[0], poles.shape[1]
     weights = np.array(surface.getWeights(), dtype=float).reshape(nu * nv)
+    if affine is not None:
+        poles = poles @ np.asarray(affine[0], dtype=float).T + np.asarray(affine[1], dtype=float)
     return _kernel.make_bspline_surface(
         np.ascontiguousarray(poles.reshape(nu * nv, 3)), weights, np.array(surface.getUKnots(), dtype=float),
         np.array(surface.getVKnots(), dtype=float), np.array(surface.getUMultiplicities(), dtype=np.int32),

@@ -329,6 +329,48 @@ void bindBlend(py::module_& m) {
              return s;
            }),
            "kind"_a, "origin"_a, "x"_a, "y"_a, "size0"_a, "size1"_a, "around"_a, "profile"_a);
+  py::class_<RevolutionProfile>(m, "RevolutionProfile",
+                                "A rational cubic profile in a half-plane bounded by the axis (issue 32).")
+      .def_property_readonly("origin", [](const RevolutionProfile& p) { return p.frame.origin; })
+      .def_property_readonly("x", [](const RevolutionProfile& p) { return p.frame.x; })
+      .def_property_readonly("y", [](const RevolutionProfile& p) { return p.frame.y; })
+      .def_property_readonly("z", [](const RevolutionProfile& p) { return p.frame.z; })
+      .def_readonly("cubic", &RevolutionProfile::cubic)
+      .def_readonly("knots", &RevolutionProfile::knots);
+  m.def("revolution_profile", &revolutionProfile, "curve"_a, "origin"_a, "axis"_a, "splits"_a = Eigen::VectorXd(),
+        "The profile of a B-spline curve of degree <= 3 about an axis (the parameters splits inserted as knots): "
+        "its Bézier pieces as (w rho, w z, w).");
+  m.def("revolution", &revolution, "profile"_a, "angles"_a,
+        "The profile revolved by the circle pieces of eq. (2): a G2 rational bicubic surface.");
+  m.def(
+      "shape_of_revolution",
+      [](const RevolutionProfile& p, const Eigen::VectorXd& around) { return ShapeOfRevolution::of(p, around); },
+      "profile"_a, "around"_a, "A Revolution of the profile over the angles, for the blends and joins.");
+  m.def(
+      "blend_shape",
+      [](const ShapeOfRevolution& shape, const std::string& method, const std::optional<BSplineSurface>& ring,
+         bool bothDirections, bool naive, const std::string& at) {
+        return blendShape(shape, methodOf(method), ringOf(ring), bothDirections, naive, interfaceOf(at));
+      },
+      "shape"_a, "method"_a = "rho", "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false,
+      "at"_a = "end", "Section 4.2 for any shape of revolution (a Revolution too); naive: the Fig. 2a baseline.");
+  m.def(
+      "affine_g2",
+      [](const G2Surface& g2, const Eigen::Matrix3d& A, const Eigen::Vector3d& t) {
+        G2Surface out = g2;
+        out.bezier = affineImage(g2.bezier, A, t);
+        return out;
+      },
+      "g2"_a, "matrix"_a, "translation"_a, "The G2 structure under p -> A p + t (exact: homogeneous rows).");
+  m.def(
+      "affine_complex",
+      [](const BlendComplex& c, const Eigen::Matrix3d& A, const Eigen::Vector3d& t) {
+        BlendComplex out = c;
+        for (TaggedPatch& p : out.patches) p.bezier = affineImage(p.bezier, A, t);
+        return out;
+      },
+      "complex"_a, "matrix"_a, "translation"_a,
+      "The blend complex under p -> A p + t: the blend of the affine image (the construction commutes with it).");
   m.def(
       "join_shapes",
       [](const ShapeOfRevolution& a, const ShapeOfRevolution& b, const std::string& method, bool bothDirections,

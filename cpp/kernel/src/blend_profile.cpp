@@ -129,6 +129,44 @@ RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV,
   return circleProfile(R, r, anglesV, method);
 }
 
+bool joinsHomogeneousC(int order, const Homogeneous3& a, const Homogeneous3& b, double h0, double h1) {
+  const double scale = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  const bool c1 = ((b.row(1) - b.row(0)) / h1 - (a.row(3) - a.row(2)) / h0).norm() <= 1e-9 * scale / std::min(h0, h1);
+  if (order < 2 || !c1) return c1;
+  return ((b.row(2) - 2 * b.row(1) + b.row(0)) / (h1 * h1) - (a.row(3) - 2 * a.row(2) + a.row(1)) / (h0 * h0)).norm() <=
+         1e-9 * scale / std::min(h0 * h0, h1 * h1);
+}
+
+RevolvedProfile curveProfile(const Homogeneous3& cubic, const Eigen::VectorXd& knots, std::vector<int>* adjusted) {
+  const int m = static_cast<int>(cubic.rows() / 4);
+  if (m < 1 || cubic.rows() != 4 * m || knots.size() != m + 1) {
+    throw InputError("a profile needs 4 homogeneous Bézier points per piece and one knot more than pieces");
+  }
+  for (int j = 0; j < m; ++j) {
+    if (!(knots[j + 1] > knots[j])) throw InputError("the profile's knots must increase");
+  }
+  RevolvedProfile p;
+  for (int j = 0; j < m; ++j) {
+    p.cubic.push_back(cubic.middleRows(4 * j, 4));
+    p.sextic.push_back(Homogeneous3(raiseCubicToSextic(PointMatrix(cubic.middleRows(4 * j, 4)))));
+  }
+  p.sexticKnots = knots.array() - knots[0];
+  for (int j = 1; j < m; ++j) {
+    // Homogeneous C2 across knot j (eqs. (3)-(4) with beta = h_j / h_{j-1}, gamma = 0), by the
+    // cubic pieces' end derivatives in the curve's parameter.
+    const double h0 = knots[j] - knots[j - 1], h1 = knots[j + 1] - knots[j];
+    if (joinsHomogeneousC(2, p.cubic[j - 1], p.cubic[j], h0, h1)) continue;
+    // Section 4.1: the identity map on both sides, then eq. (11) at their C0 interface.
+    PointMatrix left = p.sextic[j - 1], right = p.sextic[j];
+    adjustC2(left, right, h1 / h0);
+    p.sextic[j - 1] = Homogeneous3(left);
+    p.sextic[j] = Homogeneous3(right);
+    if (adjusted) adjusted->push_back(j);
+  }
+  setCurveEnds(p, p.cubic.front(), p.cubic.back());
+  return p;
+}
+
 // ---------------------------------------------------------------------------------------
 // The interface and the circle around the axis
 

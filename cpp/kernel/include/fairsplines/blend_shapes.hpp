@@ -105,6 +105,41 @@ G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eige
 G2Surface torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                 const Eigen::VectorXd& anglesV);
 
+/// The profile of a surface of revolution of any designed curve (issue 32): a rational cubic
+/// spline (a B-spline of degree <= 3, rational or not: a design spline, a conic arc, a
+/// quadratic spline raised to cubic) in a half-plane bounded by the axis.
+struct RevolutionProfile {
+  /// origin on the axis, z the axis, x the direction of the profile's half-plane (angle 0)
+  ShapeFrame frame;
+  /// 4 homogeneous Bézier rows per piece, (w rho, w zeta, w): distance from the axis and
+  /// height; the B-spline's own weights, so that its joins keep their homogeneous continuity
+  Homogeneous3 cubic;
+  Eigen::VectorXd knots;  ///< pieces + 1 increasing parameters (the curve's distinct knots)
+  int pieces() const { return static_cast<int>(cubic.rows() / 4); }
+};
+
+/// The profile of a curve about the axis through `origin` along `axis`: raised to degree 3,
+/// the parameters `splits` (inside its range) inserted as knots, split into its Bézier
+/// pieces exactly (knot insertion). Throws InputError naming the
+/// problem for a curve OCCT would refuse (poles, weights or knots not finite, ...), a degree
+/// above 3, a periodic (closed) curve, an axis that is not a finite non-zero direction, a
+/// curve not in one plane through the axis (naming the pole off it), a curve that touches
+/// or crosses the axis (naming where), or a split outside the curve's range.
+RevolutionProfile revolutionProfile(const BSplineCurve& curve, const Eigen::Vector3d& origin,
+                                    const Eigen::Vector3d& axis, const Eigen::VectorXd& splits = {});
+
+/// The profile revolved about its frame's z (eq. (2) around the axis, the profile's pieces
+/// along it): patches exactly on the surface of revolution. Profile scalars beta_j = the knot
+/// ratios h_j / h_{j-1}, gamma_j = 0 (exact at the profile's homogeneous C2 joins).
+/// Throws InputError for angles g2Circle refuses, or as revolveG2.
+G2Surface revolution(const RevolutionProfile& profile, const Eigen::VectorXd& angles);
+
+/// The homogeneous rows (w p, w) under the affine map p -> A p + t: (A (w p) + w t, w). Every
+/// construction of the blends is linear in homogeneous coordinates, so it commutes with this
+/// map (docs/BLENDING.md): the image of a sphere zone is an ellipsoid zone, exactly.
+/// Throws InputError for a map that is not finite or not invertible.
+Homogeneous4 affineImage(const Homogeneous4& rows, const Eigen::Matrix3d& A, const Eigen::Vector3d& t);
+
 /// Patch (I, J) as an exact rational Bézier Geom_BSplineSurface over [0,1]^2.
 Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J);
 
