@@ -23,8 +23,8 @@ BSplineCurve parabola(const ShapeFrame& f, double focal, double r0, double r1) {
   BSplineCurve c;
   c.degree = 2;
   c.poles.resize(3, 3);
-  const double rho[3] = {r0, (r0 + r1) / 2, r1}, z[3] = {r0 * r0 / (4 * focal), r0 * r1 / (4 * focal),
-                                                          r1 * r1 / (4 * focal)};
+  const double rho[3] = {r0, (r0 + r1) / 2, r1},
+               z[3] = {r0 * r0 / (4 * focal), r0 * r1 / (4 * focal), r1 * r1 / (4 * focal)};
   for (int k = 0; k < 3; ++k) c.poles.row(k) = (f.origin + rho[k] * f.x + z[k] * f.z).transpose();
   c.knots = vec({0.0, 1.0});
   c.mults = Eigen::VectorXi::Constant(2, 3);

@@ -212,7 +212,7 @@ def test_g2_profile_join_is_made_c2_by_eq_11():
     shape = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), NON_UNIFORM)
     assert max(abs(np.linalg.norm(p) - 2) for s in shape.patches() for p in samples(s)) < 1e-12
     result = fw.blend_basic_shape(shape, at="end")
-    assert result.surface.Continuity == "C2"
+    assert result.surface is not None and result.surface.Continuity == "C2"
     assert knot_jump(result.surface) < 1e-9
 
 
