@@ -26,7 +26,7 @@ from . import kernel
 from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, complex_c1, freeform_knots_c1
 from .errors import InputError
 from .kernel import BlendResult, SurfaceLike, as_choice, blend_result, surface_from_part
-from .shapes import AffineImage, BasicShape, Cone, Cylinder, Revolution, SphereZone, require_shape
+from .shapes import AffineImage, BasicShape, Cone, Cylinder, DupinCyclide, Revolution, SphereZone, require_shape
 
 _METHODS = ("rho", "sigma", "mixed")
 
@@ -35,6 +35,13 @@ def _check(shape, continuity, method):
     as_choice(continuity, "continuity", ("C2", "C1"))
     as_choice(method, "method", _METHODS)
     check_cost(require_shape(shape))
+
+
+def _revolving(shape):
+    """InputError for a Dupin cyclide (or an image of one) where only shapes of revolution go."""
+    base = shape.base if isinstance(shape, AffineImage) else shape
+    if isinstance(base, DupinCyclide):
+        base._revolution()  # raises the InputError that says what a cyclide blends with
 
 
 # The most patches of a shape a blend takes: 400 arcs x 2 pieces (800 patches, the ring's
@@ -147,6 +154,11 @@ def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None,
     as_choice(continuity, "continuity", ("C2", "C1"))
     _check(shape, continuity, method)
     shape, freeform, image = _through_base(shape, freeform)
+    if isinstance(shape, DupinCyclide) and continuity == "C2" and freeform is None and not shape.edited \
+            and at in (None, "end"):
+        return blend_result(_mapped(image, kernel.blend_cyclide(*shape._frame_args(), shape.a, shape.c, shape.mu,
+                                                                shape.angles_u, shape.angles_v, method)))
+    _revolving(shape)
     if continuity == "C1":
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
@@ -168,6 +180,7 @@ def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, conti
     the partition's beta do not match: its .surface is None. continuity "C1": the G1
     shape's arcs split and degree-raised without eta, the same (4,2) double strip."""
     _check(shape, continuity, "rho")
+    _revolving(shape)
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     shape, freeform, image = _through_base(shape, freeform)
@@ -191,6 +204,8 @@ def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str 
     beyond shape_a's end along the axis), else the strip folds back."""
     _check(shape_a, continuity, method)
     _check(shape_b, continuity, method)
+    _revolving(shape_a)
+    _revolving(shape_b)
     if shape_a.edited or shape_b.edited:
         raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
     image = _common_image([shape_a, shape_b])
@@ -235,6 +250,7 @@ def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional
     as_choice(method, "method", _METHODS)
     for shape in shapes:
         check_cost(require_shape(shape))
+        _revolving(shape)
     image = _common_image(shapes)
     back = None if image is None else (image.inverse, -image.inverse @ image.translation)
     start_ring, start_net = _chain_end(start, "start", back)
@@ -252,6 +268,8 @@ def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")
     _check(shape_b, "C2", "rho")
+    _revolving(shape_a)
+    _revolving(shape_b)
     image = _common_image([shape_a, shape_b])
     a, b = (s.base if image is not None else s for s in (shape_a, shape_b))
     complex_ = kernel.join_shapes(a._revolution(), b._revolution(), "rho", False, True)

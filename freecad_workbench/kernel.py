@@ -103,6 +103,7 @@ revolution_profile = _kernel.revolution_profile
 revolution = _kernel.revolution
 shape_of_revolution = _kernel.shape_of_revolution
 affine_g2 = _kernel.affine_g2
+dupin_cyclide = _kernel.dupin_cyclide
 BlendComplex = _kernel.BlendComplex
 # Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
 ring_knots = _kernel.ring_knots
@@ -114,6 +115,7 @@ blend_chain = _kernel.blend_chain
 blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
 blend_shape = _kernel.blend_shape
+blend_cyclide = _kernel.blend_cyclide
 affine_complex = _kernel.affine_complex
 ring_knots_c1 = _kernel.ring_knots_c1
 blend_c1 = _kernel.blend_c1

@@ -433,8 +433,39 @@ def Ellipsoid(center: VectorLike, radii: Sequence[float], longitudes: Sequence[f
     return AffineImage(unit, frame @ np.diag([a, b, c]), center)
 
 
-# What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).
-BasicShape = Union[SphereZone, Cylinder, Cone, Torus, Revolution, AffineImage]
+class DupinCyclide(_Shape):
+    """Dupin ring cyclide (the blending paper's "generalized tori"), c < mu < a, about
+    `center` (x_axis, axis x x_axis, axis as its x, y, z):
+    (x^2 + y^2 + z^2 - mu^2 + b^2)^2 = 4 (a x - c mu)^2 + 4 b^2 y^2, b^2 = a^2 - c^2 (c = 0:
+    the torus of radii a and mu). Both families of curvature lines are circles, partitioned by
+    angles_u and angles_v (radians, as a torus's): the G2 bicubic patches are exact.
+    fw.blend_basic_shape(cyclide) joins it C2 at its last v angle to its default ring (a
+    full turn of angles_u); C1, the naive baseline, user rings, joins and chains are not
+    built for cyclides (docs/READINGS.md)."""
 
-__all__ = ["AffineImage", "Cone", "Cylinder", "Ellipsoid", "Hyperboloid", "Paraboloid", "Revolution", "SphereZone",
-           "Torus"]
+    def __init__(self, center: VectorLike, a: float, c: float, mu: float, angles_u: Sequence[float],
+                 angles_v: Sequence[float], axis: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
+        super().__init__(center, axis, x_axis)
+        self.a, self.c, self.mu = (as_real(v, name, finite=False) for v, name in ((a, "a"), (c, "c"), (mu, "mu")))
+        self.angles_u = _angles(angles_u, "angles_u")
+        self.angles_v = _angles(angles_v, "angles_v")
+        _check_partition(self.angles_u, self.angles_v)
+        self.g2()
+
+    @property
+    def around(self) -> np.ndarray:
+        return self.angles_u
+
+    def g2(self) -> kernel.G2Surface:
+        return kernel.dupin_cyclide(*self._frame_args(), self.a, self.c, self.mu, self.angles_u, self.angles_v)
+
+    def _revolution(self):
+        raise InputError("a Dupin cyclide is not a surface of revolution: it blends C2 to its default ring only "
+                         "(fw.blend_basic_shape(cyclide)), not in joins, chains, C1 or the naive baseline")
+
+
+# What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).
+BasicShape = Union[SphereZone, Cylinder, Cone, Torus, Revolution, AffineImage, DupinCyclide]
+
+__all__ = ["AffineImage", "Cone", "Cylinder", "DupinCyclide", "Ellipsoid", "Hyperboloid", "Paraboloid", "Revolution",
+           "SphereZone", "Torus"]

@@ -158,6 +158,24 @@ void bindBlend(py::module_& m) {
       "A torus (0 < r < R) as a G2 rational bicubic surface: angles_u around the frame's z, angles_v around the "
       "tube (0 = outer equator).");
 
+  m.def(
+      "dupin_cyclide",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double c, double mu,
+         const Eigen::VectorXd& anglesU,
+         const Eigen::VectorXd& anglesV) { return dupinCyclide(frameOf(o, x, y), a, c, mu, anglesU, anglesV); },
+      "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a,
+      "A Dupin ring cyclide (c < mu < a) as a G2 rational bicubic surface: both families of curvature lines are "
+      "circles, angles_u and angles_v their partitions.");
+
+  m.def(
+      "blend_cyclide",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double c, double mu,
+         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV, const std::string& method) {
+        return blendCyclide(frameOf(o, x, y), a, c, mu, anglesU, anglesV, methodOf(method));
+      },
+      "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
+      "Section 4.2 for a Dupin ring cyclide: C2 into its default (rational) ring at the last v angle.");
+
   py::class_<C2SexticSpline>(m, "C2SexticSpline", "Sextic pieces, C2 in homogeneous space (Section 4.1).")
       .def_readonly("bezier", &C2SexticSpline::bezier)
       .def_readonly("beta", &C2SexticSpline::beta)

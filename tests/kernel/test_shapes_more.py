@@ -241,3 +241,41 @@ def test_bad_profiles_and_quadrics_raise_input_error():
         fw.shapes.Ellipsoid(CENTER, (1.0, 0.0, 2.0), NON_UNIFORM, [0.0, 0.5])
     with pytest.raises(fw.InputError, match="heights must all be greater than"):
         fw.shapes.Hyperboloid(CENTER, 1.0, 1.0, [0.5, 2.0], NON_UNIFORM, sheets=2)
+
+
+def _cyclide_implicit(p, a, c, mu, center=CENTER, frame=np.eye(3)):
+    x, y, z = frame.T @ (p - center)
+    b2 = a * a - c * c
+    lhs = (x * x + y * y + z * z - mu * mu + b2) ** 2
+    rhs = 4 * (a * x - c * mu) ** 2 + 4 * b2 * y * y
+    return abs(lhs - rhs) / (lhs + rhs)
+
+
+def test_dupin_cyclide_is_exact_g2_and_blends_c2_into_its_ring():
+    a, c, mu = 3.0, 1.0, 2.0
+    angles_v = [-1.2, -0.4, 0.5, 1.1]
+    cyclide = fw.shapes.DupinCyclide(CENTER, a, c, mu, NON_UNIFORM, angles_v)
+    patches = cyclide.patches()
+    assert len(patches) == 7 * 3
+    assert max(_cyclide_implicit(p, a, c, mu) for s in patches for p in samples(s)) < 1e-12
+    # G2 across the seams around u: the same point, normal and principal curvatures on both sides
+    nv = 3
+    worst = 0.0
+    for i in range(7):
+        left, right = patches[((i - 1) % 7) * nv], patches[i * nv]
+        for v in np.linspace(0, 1, 5):
+            kl, kr = left.curvature(1.0, v, "Mean"), right.curvature(0.0, v, "Mean")
+            gl, gr = left.curvature(1.0, v, "Gauss"), right.curvature(0.0, v, "Gauss")
+            worst = max(worst, abs(kl - kr), abs(gl - gr), (left.value(1.0, v) - right.value(0.0, v)).Length)
+    assert worst < 1e-9
+    result = fw.blend_basic_shape(cyclide)
+    assert max(_cyclide_implicit(p, a, c, mu) for s in basic(result) for p in samples(s, 6)) < 1e-12
+    assert result.surface.Continuity == "C2"
+    assert knot_jump(result.surface) < 1e-9
+    assert result.shell.isValid()
+    with pytest.raises(fw.InputError, match="not a surface of revolution"):
+        fw.blend_basic_shape(cyclide, continuity="C1")
+    with pytest.raises(fw.InputError, match="no real surface"):
+        fw.shapes.DupinCyclide(CENTER, 1.0, 2.0, 1.5, NON_UNIFORM, angles_v)
+    with pytest.raises(fw.InputError, match="not a ring cyclide"):
+        fw.shapes.DupinCyclide(CENTER, 3.0, 1.0, 0.5, NON_UNIFORM, angles_v)

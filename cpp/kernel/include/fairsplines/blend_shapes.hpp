@@ -134,6 +134,21 @@ RevolutionProfile revolutionProfile(const BSplineCurve& curve, const Eigen::Vect
 /// Throws InputError for angles g2Circle refuses, or as revolveG2.
 G2Surface revolution(const RevolutionProfile& profile, const Eigen::VectorXd& angles);
 
+/// Dupin ring cyclide (the paper's "generalized tori", Section 2) in the frame's coordinates:
+///   x = (mu (c - a cos u cos v) + b^2 cos u) / D, y = b sin u (a - mu cos v) / D,
+///   z = b sin v (c cos u - mu) / D, D = a - c cos u cos v, b^2 = a^2 - c^2,
+/// implicitly (x^2 + y^2 + z^2 - mu^2 + b^2)^2 = 4 (a x - c mu)^2 + 4 b^2 y^2 (c = 0: the
+/// torus of radii a and mu about the frame's z). Both families of curvature lines (u and v
+/// constant) are circles; bilinear in the two circles' homogeneous points, so patch (I, J)
+/// is the exact bicubic of the eq. (2) pieces of anglesU[I..I+1] and anglesV[J..J+1]. Seam
+/// scalars: the circles' beta (exact after the linear map); gamma: the circles' (the
+/// cyclide's projected gamma differ). Throws InputError for parameters that are not finite,
+/// a > c >= 0 failing (no real surface), mu outside (c, a) (singular: spindle or horn
+/// cyclide), a control weight that is not positive (arcs too wide for c / a near 1), or the
+/// angle checks of g2Circle.
+G2Surface dupinCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                       const Eigen::VectorXd& anglesV);
+
 /// The homogeneous rows (w p, w) under the affine map p -> A p + t: (A (w p) + w t, w). Every
 /// construction of the blends is linear in homogeneous coordinates, so it commutes with this
 /// map (docs/BLENDING.md): the image of a sphere zone is an ellipsoid zone, exactly.

@@ -152,6 +152,15 @@ struct ShapeOfRevolution {
   static ShapeOfRevolution of(const RevolutionProfile& p, const Eigen::VectorXd& around);
 };
 
+/// Section 4.2 for a Dupin ring cyclide (dupinCyclide; anglesU a full turn, anglesV an open
+/// range): both circles converted to C2 sextics (Section 4.1; the cyclide is bilinear in their
+/// homogeneous points, so it stays exact and the basic rows are C2 in homogeneous space), the
+/// default ring in the same tensor form (the revolution's default ring on the unit circles,
+/// mapped by the cyclide's bilinear form: rational), one (6,5) strip at the last v angle.
+/// Throws InputError as dupinCyclide, for a partial turn, or a ring weight that is not positive.
+BlendComplex blendCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                          const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho);
+
 /// Section 4.2 for any shape of revolution (a Revolution's profile included): as blendCone,
 /// the interface at the end or start of its profile. A profile join that is only G2 (not C2
 /// in homogeneous space, e.g. a double knot) is made C2 by eq. (11) in the sextic rows
