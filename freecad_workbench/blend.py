@@ -71,7 +71,7 @@ def _through_base(shape, freeform):
         return shape, freeform, None
     ring = None
     if freeform is not None:
-        ring = surface_from_part(freeform, (shape.inverse, -shape.inverse @ shape.translation))
+        ring = surface_from_part(freeform, shape.inverse)
     return shape.base_for_blend(), ring, shape
 
 
@@ -88,8 +88,7 @@ def _common_image(shapes):
     first = images[0]
 
     def same(s):
-        return (isinstance(s, AffineImage) and np.allclose(s.matrix, first.matrix, rtol=1e-12, atol=0)
-                and np.allclose(s.translation, first.translation, rtol=1e-12, atol=0))
+        return isinstance(s, AffineImage) and np.allclose(s.map, first.map, rtol=1e-12, atol=0)
 
     for s in shapes:
         if not same(s):
@@ -252,7 +251,7 @@ def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional
         check_cost(require_shape(shape))
         _revolving(shape)
     image = _common_image(shapes)
-    back = None if image is None else (image.inverse, -image.inverse @ image.translation)
+    back = None if image is None else image.inverse
     start_ring, start_net = _chain_end(start, "start", back)
     end_ring, end_net = _chain_end(end, "end", back)
     if image is not None:

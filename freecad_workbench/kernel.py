@@ -102,7 +102,7 @@ RevolutionProfile = _kernel.RevolutionProfile
 revolution_profile = _kernel.revolution_profile
 revolution = _kernel.revolution
 shape_of_revolution = _kernel.shape_of_revolution
-affine_g2 = _kernel.affine_g2
+image_g2 = _kernel.image_g2
 dupin_cyclide = _kernel.dupin_cyclide
 BlendComplex = _kernel.BlendComplex
 # Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
@@ -116,7 +116,7 @@ blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
 blend_shape = _kernel.blend_shape
 blend_cyclide = _kernel.blend_cyclide
-affine_complex = _kernel.affine_complex
+image_complex = _kernel.image_complex
 ring_knots_c1 = _kernel.ring_knots_c1
 blend_c1 = _kernel.blend_c1
 join_shapes_c1 = _kernel.join_shapes_c1
@@ -302,9 +302,9 @@ def surface_to_part(surface):
     return result
 
 
-def surface_from_part(surface, affine=None):
+def surface_from_part(surface, image=None):
     """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact); with
-    affine = (matrix, translation), its poles under p -> matrix p + translation."""
+    image = a 4 x 4 matrix M, its homogeneous poles under (w p, w) -> M (w p, w)."""
     import Part
 
     if isinstance(surface, Part.Shape):
@@ -317,8 +317,12 @@ def surface_from_part(surface, affine=None):
     poles = np.array([[(p.x, p.y, p.z) for p in row] for row in surface.getPoles()], dtype=float)
     nu, nv = poles.shape[0], poles.shape[1]
     weights = np.array(surface.getWeights(), dtype=float).reshape(nu * nv)
-    if affine is not None:
-        poles = poles @ np.asarray(affine[0], dtype=float).T + np.asarray(affine[1], dtype=float)
+    if image is not None:
+        h = np.hstack([poles.reshape(nu * nv, 3) * weights[:, None], weights[:, None]]) @ np.asarray(image).T
+        if not np.all(h[:, 3] > 0):
+            raise InputError("the ring reaches where the shape's map has no positive weight (to infinity)")
+        weights = h[:, 3].copy()
+        poles = (h[:, :3] / weights[:, None]).reshape(nu, nv, 3)
     return _kernel.make_bspline_surface(
         np.ascontiguousarray(poles.reshape(nu * nv, 3)), weights, np.array(surface.getUKnots(), dtype=float),
         np.array(surface.getVKnots(), dtype=float), np.array(surface.getUMultiplicities(), dtype=np.int32),

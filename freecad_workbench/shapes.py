@@ -371,21 +371,26 @@ class AffineImage(_Shape):
     the image of a sphere zone, an elliptic paraboloid that of a paraboloid of revolution."""
 
     def __init__(self, shape: Any, matrix: Any, translation: VectorLike = (0, 0, 0)) -> None:
+        try:
+            A = np.array(matrix, dtype=float).reshape(3, 3)
+        except (TypeError, ValueError):
+            raise InputError("matrix must be 3 x 3 numbers") from None
+        M = np.eye(4)
+        M[:3, :3], M[:3, 3] = A, _vector3(translation, "translation")
+        self._set(shape, M)
+
+    def _set(self, shape, M):
         self._control = None
         self.base = require_shape(shape)
         if isinstance(shape, AffineImage):
-            raise InputError("map the base shape once: compose the two affine maps")
-        try:
-            self.matrix = np.array(matrix, dtype=float).reshape(3, 3)
-        except (TypeError, ValueError):
-            raise InputError("matrix must be 3 x 3 numbers") from None
-        self.translation = _vector3(translation, "translation")
-        if not np.all(np.isfinite(self.matrix)) or abs(np.linalg.det(self.matrix)) <= 1e-12 * max(
-                np.abs(self.matrix).max(), 1e-300) ** 3:
-            raise InputError("the affine map is degenerate (determinant 0) or not finite")
-        self.inverse = np.linalg.inv(self.matrix)
-        self.center = self.matrix @ self.base.center + self.translation
+            raise InputError("map the base shape once: compose the two maps")
+        if not np.all(np.isfinite(M)) or abs(np.linalg.det(M)) <= 1e-12 * max(np.abs(M).max(), 1e-300) ** 4:
+            raise InputError("the map is degenerate (determinant 0) or not finite")
+        self.map, self.inverse = M, np.linalg.inv(M)
         self.axis, self.x_axis, self.y_axis = self.base.axis, self.base.x_axis, self.base.y_axis
+        h = M @ np.append(self.base.center, 1.0)
+        self.center = h[:3] / h[3] if h[3] > 0 else self.base.center
+        self.g2()  # validate now: InputError names the problem
 
     @property
     def around(self) -> np.ndarray:
@@ -395,7 +400,7 @@ class AffineImage(_Shape):
         return self.base.pole_at(end)
 
     def g2(self) -> kernel.G2Surface:
-        return kernel.affine_g2(self.base.g2(), self.matrix, self.translation)
+        return kernel.image_g2(self.base.g2(), self.map)
 
     def _revolution(self):
         raise InputError("an affine image is joined through its base shape (fw.blend maps it)")
@@ -407,12 +412,43 @@ class AffineImage(_Shape):
         import copy
 
         base = copy.copy(self.base)
-        base._control = kernel.affine_g2(self._control, self.inverse, -self.inverse @ self.translation)
+        base._control = kernel.image_g2(self._control, self.inverse)
         return base
 
     def map_complex(self, complex_: kernel.BlendComplex) -> kernel.BlendComplex:
         """The blend complex of the base shape under this map."""
-        return kernel.affine_complex(complex_, self.matrix, self.translation)
+        return kernel.image_complex(complex_, self.map)
+
+
+class ProjectiveImage(AffineImage):
+    """The image of a basic shape under the projective map (w p, w) -> matrix (w p, w)
+    (4 x 4): linear in homogeneous space, so the blends commute with it as with affine maps,
+    wherever its weights stay positive (InputError otherwise)."""
+
+    def __init__(self, shape: Any, matrix: Any) -> None:
+        try:
+            M = np.array(matrix, dtype=float).reshape(4, 4)
+        except (TypeError, ValueError):
+            raise InputError("matrix must be 4 x 4 numbers") from None
+        self._set(shape, M)
+
+
+def HyperbolicCylinder(center: VectorLike, a: float, b: float, angles: Sequence[float], heights: Sequence[float],
+                       axis: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> ProjectiveImage:
+    """The hyperbolic cylinder x^2/a^2 - y^2/b^2 = 1 (x > 0; x along x_axis, heights along
+    `axis`), the hyperbola (a sec t, b tan t) over the increasing angles t in (-pi/2, pi/2)
+    extruded (Fig. 9). Exact: the paper's recipe turns (a, b sin t | cos t) into rational
+    form with the circle pieces of eq. (2), i.e. the image of a circular cylinder's partial
+    turn under (X, Y, Z, W) -> (a W, b Y, Z, X) in the frame."""
+    a, b = _positive(a, "a"), _positive(b, "b")
+    t = _increasing(angles, "angles")
+    if not (t[0] > -np.pi / 2 and t[-1] < np.pi / 2):
+        raise InputError("a hyperbolic cylinder's angles must lie in (-pi/2, pi/2) (the branch x > 0)")
+    cylinder = Cylinder(center, 1.0, t, heights, axis, x_axis)
+    F = np.eye(4)
+    F[:3, 0], F[:3, 1], F[:3, 2], F[:3, 3] = cylinder.x_axis, cylinder.y_axis, cylinder.axis, cylinder.center
+    P = np.array([[0, 0, 0, a], [0, b, 0, 0], [0, 0, 1, 0], [1, 0, 0, 0]], dtype=float)
+    return ProjectiveImage(cylinder, F @ P @ np.linalg.inv(F))
 
 
 def Ellipsoid(center: VectorLike, radii: Sequence[float], longitudes: Sequence[float], latitudes: Sequence[float],
@@ -467,5 +503,5 @@ class DupinCyclide(_Shape):
 # What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).
 BasicShape = Union[SphereZone, Cylinder, Cone, Torus, Revolution, AffineImage, DupinCyclide]
 
-__all__ = ["AffineImage", "Cone", "Cylinder", "DupinCyclide", "Ellipsoid", "Hyperboloid", "Paraboloid", "Revolution",
-           "SphereZone", "Torus"]
+__all__ = ["AffineImage", "Cone", "Cylinder", "DupinCyclide", "Ellipsoid", "HyperbolicCylinder", "Hyperboloid",
+           "Paraboloid", "ProjectiveImage", "Revolution", "SphereZone", "Torus"]

@@ -373,22 +373,22 @@ void bindBlend(py::module_& m) {
       "shape"_a, "method"_a = "rho", "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false,
       "at"_a = "end", "Section 4.2 for any shape of revolution (a Revolution too); naive: the Fig. 2a baseline.");
   m.def(
-      "affine_g2",
-      [](const G2Surface& g2, const Eigen::Matrix3d& A, const Eigen::Vector3d& t) {
+      "image_g2",
+      [](const G2Surface& g2, const Eigen::Matrix4d& M) {
         G2Surface out = g2;
-        out.bezier = affineImage(g2.bezier, A, t);
+        out.bezier = projectiveImage(g2.bezier, M);
         return out;
       },
-      "g2"_a, "matrix"_a, "translation"_a, "The G2 structure under p -> A p + t (exact: homogeneous rows).");
+      "g2"_a, "matrix"_a, "The G2 structure under (w p, w) -> M (w p, w): affine or projective, exact.");
   m.def(
-      "affine_complex",
-      [](const BlendComplex& c, const Eigen::Matrix3d& A, const Eigen::Vector3d& t) {
+      "image_complex",
+      [](const BlendComplex& c, const Eigen::Matrix4d& M) {
         BlendComplex out = c;
-        for (TaggedPatch& p : out.patches) p.bezier = affineImage(p.bezier, A, t);
+        for (TaggedPatch& p : out.patches) p.bezier = projectiveImage(p.bezier, M);
         return out;
       },
-      "complex"_a, "matrix"_a, "translation"_a,
-      "The blend complex under p -> A p + t: the blend of the affine image (the construction commutes with it).");
+      "complex"_a, "matrix"_a,
+      "The blend complex under (w p, w) -> M (w p, w): the blend of the image (the construction commutes with it).");
   m.def(
       "join_shapes",
       [](const ShapeOfRevolution& a, const ShapeOfRevolution& b, const std::string& method, bool bothDirections,

@@ -279,3 +279,30 @@ def test_dupin_cyclide_is_exact_g2_and_blends_c2_into_its_ring():
         fw.shapes.DupinCyclide(CENTER, 1.0, 2.0, 1.5, NON_UNIFORM, angles_v)
     with pytest.raises(fw.InputError, match="not a ring cyclide"):
         fw.shapes.DupinCyclide(CENTER, 3.0, 1.0, 0.5, NON_UNIFORM, angles_v)
+
+
+def test_hyperbolic_cylinder_is_exact_and_blends_c2():
+    # Fig. 9: x^2/a^2 - y^2/b^2 = 1 extruded along the axis, a projective image of a
+    # circular cylinder's partial turn (the paper's recipe (a, b sin t | cos t)).
+    a, b = 1.5, 0.8
+    x_axis = np.array([1.0, 0.4, 0.0])
+    shape = fw.shapes.HyperbolicCylinder(CENTER, a, b, [-1.0, -0.3, 0.4, 1.1], [0.0, 0.5, 1.2], axis=AXIS,
+                                         x_axis=x_axis)
+    x = x_axis - (x_axis @ AXIS) * AXIS
+    x /= np.linalg.norm(x)
+    frame = np.column_stack([x, np.cross(AXIS, x), AXIS])
+
+    def implicit(p):
+        q = frame.T @ (p - CENTER)
+        return abs(q[0] ** 2 / a ** 2 - q[1] ** 2 / b ** 2 - 1) / (q[0] ** 2 / a ** 2 + q[1] ** 2 / b ** 2)
+
+    assert max(implicit(p) for s in shape.patches() for p in samples(s)) < 1e-12
+    result = fw.blend_basic_shape(shape, at="end")
+    assert max(implicit(p) for s in basic(result) for p in samples(s, 6)) < 1e-12
+    assert result.surface.Continuity == "C2"
+    assert knot_jump(result.surface) < 1e-9
+    assert result.shell.isValid()
+    with pytest.raises(fw.InputError, match=r"\(-pi/2, pi/2\)"):
+        fw.shapes.HyperbolicCylinder(CENTER, a, b, [-2.0, 0.0], [0.0, 1.0])
+    with pytest.raises(fw.InputError, match="degenerate quadric: b"):
+        fw.shapes.HyperbolicCylinder(CENTER, a, 0.0, [-1.0, 0.0], [0.0, 1.0])

@@ -137,10 +137,25 @@ Homogeneous4 affineImage(const Homogeneous4& rows, const Eigen::Matrix3d& A, con
   if (!(std::abs(A.determinant()) > 1e-12 * scale * scale * scale)) {
     throw InputError("the affine map is degenerate (its determinant is 0): it would flatten the shape");
   }
+  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
+  M.topLeftCorner<3, 3>() = A;
+  M.topRightCorner<3, 1>() = t;
+  return projectiveImage(rows, M);
+}
+
+Homogeneous4 projectiveImage(const Homogeneous4& rows, const Eigen::Matrix4d& M) {
+  if (!M.allFinite()) throw InputError("the map is not finite");
+  const double scale = M.cwiseAbs().maxCoeff();
+  if (!(std::abs(M.determinant()) > 1e-12 * std::pow(scale, 4))) {
+    throw InputError("the map is degenerate (its determinant is 0): it would flatten the shape");
+  }
   Homogeneous4 out(rows.rows(), 4);
   for (Eigen::Index k = 0; k < rows.rows(); ++k) {
-    const Eigen::Vector3d wp = rows.row(k).head<3>().transpose();
-    out.row(k) << (A * wp + rows(k, 3) * t).transpose(), rows(k, 3);
+    out.row(k) = (M * rows.row(k).transpose()).transpose();
+    if (!(out(k, 3) > 0)) {
+      throw InputError("the map sends control point " + std::to_string(k) + " to weight " + number(out(k, 3)) +
+                       " (<= 0: to infinity or beyond); keep the shape where the map's weight is positive");
+    }
   }
   return out;
 }

@@ -155,6 +155,15 @@ G2Surface dupinCyclide(const ShapeFrame& frame, double a, double c, double mu, c
 /// Throws InputError for a map that is not finite or not invertible.
 Homogeneous4 affineImage(const Homogeneous4& rows, const Eigen::Matrix3d& A, const Eigen::Vector3d& t);
 
+/// The homogeneous rows under the projective map (w p, w) -> M (w p, w) (a linear map of
+/// homogeneous space, so the blends commute with it as with affine maps). The paper's
+/// recipe of Section 2 in one line: the hyperbolic cylinder x^2/a^2 - y^2/b^2 = 1 is
+/// (a, b sin t | cos t) = M (cos t, sin t | 1) times the heights, i.e. the image of a
+/// circular cylinder's partial turn (|t| < pi/2) under (X, Y, Z, W) -> (a W, b Y, Z, X).
+/// Throws InputError for a map that is not finite or not invertible, or a row whose weight
+/// becomes <= 0 (the row's point would go to infinity or beyond), naming the row.
+Homogeneous4 projectiveImage(const Homogeneous4& rows, const Eigen::Matrix4d& M);
+
 /// Patch (I, J) as an exact rational Bézier Geom_BSplineSurface over [0,1]^2.
 Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J);
 
