@@ -418,6 +418,16 @@ def require_bounded(first, last, kind):
         raise InputError(f"the {kind} is unbounded (parameters {first:g} to {last:g}): trim it first")
 
 
+def edge_bspline(edge):
+    """The edge's exact Part.BSplineCurve (rational where needed), restricted to the edge and
+    running the way the edge does in its wire (reversed for a reversed edge)."""
+    geom = _edge_bspline(edge)
+    if edge.Orientation == "Reversed":
+        geom = geom.copy()
+        geom.reverse()
+    return geom
+
+
 def _edge_bspline(edge):
     """The edge's exact (rational where needed) B-spline, restricted to the edge."""
     import Part

@@ -229,16 +229,38 @@ class Torus(_Shape):
 
 
 def _profile_curve(profile):
-    """A kernel BSplineCurve from a Part curve or edge (exact B-spline form) or a kernel one."""
+    """A kernel BSplineCurve from a kernel one, a Part curve or edge (exact B-spline form), or
+    a shape or document object of several connected edges (a sketch, a Design spline object):
+    their exact B-splines joined end to end in the order of their wire (the joins keep the
+    continuity the edges have: a multiple knot, treated by eq. (11) in the C2 blend)."""
     if isinstance(profile, kernel.BSplineCurve):
         return profile
-    if isinstance(profile, Revolution):
-        raise InputError("profile must be a curve, not a Revolution")
+    if isinstance(profile, _Shape):
+        raise InputError(f"profile must be a curve, not a {type(profile).__name__}")
     try:
-        return kernel.from_part(profile)
+        import Part
     except ImportError:
         raise InputError("profile must be a Part curve or edge (FreeCAD's Part module is needed) "
                          "or a kernel BSplineCurve") from None
+    if not isinstance(profile, (Part.Shape, Part.Curve if hasattr(Part, "Curve") else ())) and hasattr(profile,
+                                                                                                       "Shape"):
+        profile = profile.Shape  # a document object: a sketch, a Design spline
+    if isinstance(profile, Part.Shape) and len(profile.Edges) > 1:
+        try:
+            wire = Part.Wire(Part.__sortEdges__(profile.Edges))
+        except Part.OCCError:
+            raise InputError("the profile's edges do not form one connected wire") from None
+        if len(wire.OrderedEdges) != len(profile.Edges):
+            raise InputError("the profile's edges do not form one connected wire")
+        curve = None
+        for edge in wire.OrderedEdges:
+            piece = kernel.edge_bspline(edge)
+            if curve is None:
+                curve = piece.copy()
+            elif not curve.join(piece):
+                raise InputError("the profile's edges could not be joined into one B-spline")
+        profile = curve
+    return kernel.from_part(profile)
 
 
 class Revolution(_Shape):

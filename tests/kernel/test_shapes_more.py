@@ -306,3 +306,24 @@ def test_hyperbolic_cylinder_is_exact_and_blends_c2():
         fw.shapes.HyperbolicCylinder(CENTER, a, b, [-2.0, 0.0], [0.0, 1.0])
     with pytest.raises(fw.InputError, match="degenerate quadric: b"):
         fw.shapes.HyperbolicCylinder(CENTER, a, 0.0, [-1.0, 0.0], [0.0, 1.0])
+
+
+def test_a_sketch_like_profile_of_several_edges_is_joined_and_revolved():
+    # A line and a tangent circle arc as separate edges (a sketch's), the arc listed first and
+    # reversed: joined end to end, revolved exactly, blended C2 (eq. (11) at the C1 join).
+    line = Part.LineSegment(FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(1, 0, 1)).toShape()
+    h = math.sqrt(0.5)
+    arc = Part.Arc(FreeCAD.Vector(2, 0, 2), FreeCAD.Vector(2 - h, 0, 1 + h), FreeCAD.Vector(1, 0, 1)).toShape()
+    profile = Part.Compound([arc, line])
+    shape = fw.shapes.Revolution(profile, (0, 0, 0), (0, 0, 1), NON_UNIFORM)
+    worst = 0.0
+    for s in shape.patches():
+        for p in samples(s, 5):
+            r, z = radial(p, np.zeros(3), np.array([0.0, 0, 1]))
+            worst = max(worst, min(abs(r - 1) if z <= 1 + 1e-9 else 1.0, abs(math.hypot(r - 2, z - 1) - 1)))
+    assert worst < 1e-12
+    result = fw.blend_basic_shape(shape)
+    assert result.surface is not None and result.surface.Continuity == "C2"
+    with pytest.raises(fw.InputError, match="connected wire"):
+        far = Part.LineSegment(FreeCAD.Vector(5, 0, 5), FreeCAD.Vector(5, 0, 6)).toShape()
+        fw.shapes.Revolution(Part.Compound([line, far]), (0, 0, 0), (0, 0, 1), NON_UNIFORM)
