@@ -113,7 +113,7 @@ TEST(Revolution, AG2JoinOfTheProfileIsMadeC2ByEq11) {
     c.poles.row(k) << 2 * h[0] / h[2], 0.0, 2 * h[1] / h[2];
     c.weights[k] = h[2];
   }
-  c.knots = vec({0.0, 1.0, 2.0});
+  c.knots = vec({0.0, 1.0, 2.5});  // unequal intervals: eq. (11) needs beta = 1.5
   c.mults = Eigen::Vector3i(4, 3, 4);
   const RevolutionProfile p = revolutionProfile(c, f.origin, f.z);
   const BlendComplex complex = blendShape(ShapeOfRevolution::of(p, nonUniformTurn()));

@@ -170,11 +170,14 @@ def test_designed_profile_revolved_and_blended_keeps_each_conic_piece_exact(tmp_
                     assert worst < 1e-12, (j, k, worst)
                 checked[k] += 1
     assert all(n >= 2 for n in checked.values()), checked
-    # save, reopen: identical poles
+    # save, reopen and recompute: identical poles
     path = str(tmp_path / "revolution.brep")
     result.shell.exportBrep(path)
     back = Part.read(path)
     assert all(a.Surface.getPoles() == b.Surface.getPoles() for a, b in zip(result.shell.Faces, back.Faces))
+    again = fw.blend_basic_shape(fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), angles), at="end")
+    assert all(a.getPoles() == b.getPoles() and a.getWeights() == b.getWeights()
+               for (_, a), (_, b) in zip(result.patches, again.patches))
 
 
 def test_revolution_everywhere_the_other_shapes_go():
@@ -208,7 +211,7 @@ def test_g2_profile_join_is_made_c2_by_eq_11():
         poles += [FreeCAD.Vector(2 * p[0], 0, 2 * p[1]) for p in pts]
         weights += ([1.0] if len(weights) == 0 else []) + [w, w, 1.0]
     curve = Part.BSplineCurve()
-    curve.buildFromPolesMultsKnots(poles, [4, 3, 4], [0.0, 1.0, 2.0], False, 3, weights)
+    curve.buildFromPolesMultsKnots(poles, [4, 3, 4], [0.0, 1.0, 2.5], False, 3, weights)  # beta = 1.5
     shape = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), NON_UNIFORM)
     assert max(abs(np.linalg.norm(p) - 2) for s in shape.patches() for p in samples(s)) < 1e-12
     result = fw.blend_basic_shape(shape, at="end")
