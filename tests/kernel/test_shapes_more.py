@@ -196,9 +196,10 @@ def test_revolution_everywhere_the_other_shapes_go():
     assert joined.surface.Continuity == "C2"
 
 
-def test_g2_profile_join_is_made_c2_by_eq_11():
+def test_g2_profile_join_is_made_c2_and_stays_exact():
     # Two circle pieces of eq. (2) with different openings: G2, not C2 in homogeneous space
-    # (a knot of multiplicity 3). Section 4.1 makes the sextic rows C2 by eq. (11).
+    # (a knot of multiplicity 3). Section 4.1 reparameterizes the right piece (Appendix 7.2
+    # generalised): the sextic rows are C2 and both pieces stay on the circle.
     poles, weights = [], []
     for t0, t1 in ((-0.5, 0.1), (0.1, 0.9)):
         a = t1 - t0
@@ -217,6 +218,8 @@ def test_g2_profile_join_is_made_c2_by_eq_11():
     result = fw.blend_basic_shape(shape, at="end")
     assert result.surface is not None and result.surface.Continuity == "C2"
     assert knot_jump(result.surface) < 1e-9
+    # Section 4.1 with the generalised transition map keeps both conic pieces exact
+    assert max(abs(np.linalg.norm(p) - 2) / 2 for s in basic(result) for p in samples(s, 6)) < 1e-12
 
 
 def test_bad_profiles_and_quadrics_raise_input_error():

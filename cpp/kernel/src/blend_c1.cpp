@@ -441,14 +441,13 @@ G1RevolvedShape g1Revolution(const ShapeFrame& frame, const Eigen::VectorXd& ang
                              const Eigen::VectorXd& knots) {
   G1RevolvedShape s;
   aroundAxis(s, frame, angles);
-  // The C2 profile's pieces and homogeneous C2 test (curveProfile), kept cubic here.
-  std::vector<int> notC2;
-  const detail::RevolvedProfile p = detail::curveProfile(cubic, knots, &notC2);
+  // The C2 profile's pieces and interface data (curveProfile); the cubic pieces are kept here.
+  const detail::RevolvedProfile p = detail::curveProfile(cubic, knots);
   const int m = static_cast<int>(p.cubic.size());
   s.profile = p.cubic;
   s.profileBeta = Eigen::VectorXd::Ones(m);
   for (int j = 1; j < m; ++j) s.profileBeta[j] = (knots[j + 1] - knots[j]) / (knots[j] - knots[j - 1]);
-  s.profileKnots = p.sexticKnots;
+  s.profileKnots = knots.array() - knots[0];
   s.profileIsCurve = true;
   // C1 in homogeneous space across every knot (the B-spline's simple and double knots).
   s.profileIsLine = true;
