@@ -246,21 +246,32 @@ def _profile_curve(profile):
                                                                                                        "Shape"):
         profile = profile.Shape  # a document object: a sketch, a Design spline
     if isinstance(profile, Part.Shape) and len(profile.Edges) > 1:
-        try:
-            wire = Part.Wire(Part.__sortEdges__(profile.Edges))
-        except Part.OCCError:
-            raise InputError("the profile's edges do not form one connected wire") from None
-        if len(wire.OrderedEdges) != len(profile.Edges):
-            raise InputError("the profile's edges do not form one connected wire")
-        curve = None
-        for edge in wire.OrderedEdges:
-            piece = kernel.edge_bspline(edge)
-            if curve is None:
-                curve = piece.copy()
-            elif not curve.join(piece):
-                raise InputError("the profile's edges could not be joined into one B-spline")
-        profile = curve
+        profile = joined_profile(profile)
     return kernel.from_part(profile)
+
+
+def joined_profile(shape: Any) -> Any:
+    """The Part.BSplineCurve of a shape's edges joined end to end in the order of their wire
+    (one edge: its exact B-spline). InputError if they do not form one connected wire."""
+    import Part
+
+    edges = shape.Edges
+    if len(edges) == 1:
+        return kernel.edge_bspline(edges[0])
+    try:
+        wire = Part.Wire(Part.__sortEdges__(edges))
+    except Part.OCCError:
+        raise InputError("the profile's edges do not form one connected wire") from None
+    if len(wire.OrderedEdges) != len(edges):
+        raise InputError("the profile's edges do not form one connected wire")
+    curve = None
+    for edge in wire.OrderedEdges:
+        piece = kernel.edge_bspline(edge)
+        if curve is None:
+            curve = piece.copy()
+        elif not curve.join(piece):
+            raise InputError("the profile's edges could not be joined into one B-spline")
+    return curve
 
 
 class Revolution(_Shape):
