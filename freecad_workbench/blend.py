@@ -23,10 +23,10 @@ from typing import Optional, Sequence, Union
 import numpy as np
 
 from . import kernel
-from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, freeform_knots_c1
+from .blend_c1 import blend_basic_shape_c1, blend_naive_c1, complex_c1, freeform_knots_c1
 from .errors import InputError
 from .kernel import BlendResult, SurfaceLike, as_choice, blend_result, surface_from_part
-from .shapes import BasicShape, Cone, Cylinder, SphereZone, require_shape
+from .shapes import AffineImage, BasicShape, Cone, Cylinder, DupinCyclide, Revolution, SphereZone, require_shape
 
 _METHODS = ("rho", "sigma", "mixed")
 
@@ -35,6 +35,13 @@ def _check(shape, continuity, method):
     as_choice(continuity, "continuity", ("C2", "C1"))
     as_choice(method, "method", _METHODS)
     check_cost(require_shape(shape))
+
+
+def _revolving(shape):
+    """InputError for a Dupin cyclide (or an image of one) where only shapes of revolution go."""
+    base = shape.base if isinstance(shape, AffineImage) else shape
+    if isinstance(base, DupinCyclide):
+        base._revolution()  # raises the InputError that says what a cyclide blends with
 
 
 # The most patches of a shape a blend takes: 400 arcs x 2 pieces (800 patches, the ring's
@@ -54,6 +61,40 @@ def check_cost(shape):
 
 def _ring(shape, freeform):
     return None if freeform is None else surface_from_part(freeform)
+
+
+def _through_base(shape, freeform):
+    """(the shape the blend runs on, its ring, the map of the result): an AffineImage is
+    blended as its base shape with the ring mapped back, and the complex mapped forward (the
+    construction commutes with affine maps, docs/BLENDING.md); other shapes as they are."""
+    if not isinstance(shape, AffineImage):
+        return shape, freeform, None
+    ring = None
+    if freeform is not None:
+        ring = surface_from_part(freeform, shape.inverse)
+    return shape.base_for_blend(), ring, shape
+
+
+def _mapped(image, complex_):
+    return complex_ if image is None else image.map_complex(complex_)
+
+
+def _common_image(shapes):
+    """The one affine map of a join or chain (None: no AffineImage); InputError where the
+    shapes are not all images under the same map."""
+    images = [s for s in shapes if isinstance(s, AffineImage)]
+    if not images:
+        return None
+    first = images[0]
+
+    def same(s):
+        return isinstance(s, AffineImage) and np.allclose(s.map, first.map, rtol=1e-12, atol=0)
+
+    for s in shapes:
+        if not same(s):
+            raise InputError("shapes joined in one complex must all be affine images under the same map "
+                             "(or none of them)")
+    return first
 
 
 def freeform_knots(shape: BasicShape, method: str = "rho", continuity: str = "C2") -> np.ndarray:
@@ -83,7 +124,9 @@ def _interface_or_auto(shape, at):
 
 def _complex(shape, freeform, method, naive, at):
     frame = (shape.center, shape.x_axis, shape.y_axis)
-    ring = _ring(shape, freeform)
+    ring = freeform if freeform is None or isinstance(freeform, kernel.BSplineSurface) else _ring(shape, freeform)
+    if isinstance(shape, Revolution):
+        return kernel.blend_shape(shape._revolution(), method, ring, True, naive, at)
     if isinstance(shape, SphereZone):
         if naive:
             return kernel.blend_sphere_zone_naive(*frame, shape.radius, shape.longitudes, shape.latitudes, ring, at)
@@ -108,17 +151,25 @@ def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None,
     .surface is then None). continuity "C1": Section 5, a biquadratic ring and a (4,2)
     double strip (blend_c1.py; method unused)."""
     as_choice(continuity, "continuity", ("C2", "C1"))
+    _check(shape, continuity, method)
+    shape, freeform, image = _through_base(shape, freeform)
+    if isinstance(shape, DupinCyclide) and continuity == "C2" and freeform is None and not shape.edited \
+            and at in (None, "end"):
+        return blend_result(_mapped(image, kernel.blend_cyclide(*shape._frame_args(), shape.a, shape.c, shape.mu,
+                                                                shape.angles_u, shape.angles_v, method)))
+    _revolving(shape)
     if continuity == "C1":
-        _check(shape, continuity, method)
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
+        if image is not None:
+            return blend_result(image.map_complex(complex_c1(shape, freeform, at=_interface(shape, at))))
         return blend_basic_shape_c1(shape, freeform, at=_interface(shape, at))
-    _check(shape, continuity, method)
     if shape.edited:
         if _interface(shape, at) != "end":
             raise InputError("an edited control structure joins at the end of its profile")
-        return blend_result(kernel.blend_edited(shape._revolution(), shape.control(), method, _ring(shape, freeform)))
-    return blend_result(_complex(shape, freeform, method, False, _interface_or_auto(shape, at)))
+        ring = freeform if freeform is None or isinstance(freeform, kernel.BSplineSurface) else _ring(shape, freeform)
+        return blend_result(_mapped(image, kernel.blend_edited(shape._revolution(), shape.control(), method, ring)))
+    return blend_result(_mapped(image, _complex(shape, freeform, method, False, _interface_or_auto(shape, at))))
 
 
 def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, continuity: str = "C2",
@@ -128,11 +179,17 @@ def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, conti
     the partition's beta do not match: its .surface is None. continuity "C1": the G1
     shape's arcs split and degree-raised without eta, the same (4,2) double strip."""
     _check(shape, continuity, "rho")
+    _revolving(shape)
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
+    shape, freeform, image = _through_base(shape, freeform)
     if continuity == "C1":
+        if image is not None:
+            complex_ = complex_c1(shape, freeform, None, naive=True, at=_interface(shape, at))
+            return blend_result(image.map_complex(complex_), single=False)
         return blend_naive_c1(shape, freeform, at=_interface(shape, at))
-    return blend_result(_complex(shape, freeform, "rho", True, _interface_or_auto(shape, at)), single=False)
+    return blend_result(_mapped(image, _complex(shape, freeform, "rho", True, _interface_or_auto(shape, at))),
+                        single=False)
 
 
 def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str = "C2",
@@ -146,21 +203,26 @@ def join_basic_shapes(shape_a: BasicShape, shape_b: BasicShape, continuity: str 
     beyond shape_a's end along the axis), else the strip folds back."""
     _check(shape_a, continuity, method)
     _check(shape_b, continuity, method)
+    _revolving(shape_a)
+    _revolving(shape_b)
     if shape_a.edited or shape_b.edited:
         raise InputError("join_basic_shapes takes unedited shapes (call reset_control())")
+    image = _common_image([shape_a, shape_b])
+    a, b = (s.base if image is not None else s for s in (shape_a, shape_b))
     if continuity == "C1":
-        return blend_result(kernel.join_shapes_c1(shape_a._revolution(), shape_b._revolution(), True))
-    return blend_result(kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), method, True, False))
+        return blend_result(_mapped(image, kernel.join_shapes_c1(a._revolution(), b._revolution(), True)))
+    return blend_result(_mapped(image, kernel.join_shapes(a._revolution(), b._revolution(), method, True, False)))
 
 
-def _chain_end(end, name):
-    """(ring?, net) of one end of a chain: None (open), "default" (the default ring) or a ring."""
+def _chain_end(end, name, back=None):
+    """(ring?, net) of one end of a chain: None (open), "default" (the default ring) or a ring
+    (mapped by `back`, (matrix, translation), for a chain of affine images)."""
     if end is None:
         return False, None
     if isinstance(end, str):
         as_choice(end, name, ("default",))
         return True, None
-    return True, surface_from_part(end)
+    return True, surface_from_part(end, back)
 
 
 def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional[Union[str, SurfaceLike]] = None,
@@ -187,12 +249,17 @@ def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional
     as_choice(method, "method", _METHODS)
     for shape in shapes:
         check_cost(require_shape(shape))
-    start_ring, start_net = _chain_end(start, "start")
-    end_ring, end_net = _chain_end(end, "end")
+        _revolving(shape)
+    image = _common_image(shapes)
+    back = None if image is None else image.inverse
+    start_ring, start_net = _chain_end(start, "start", back)
+    end_ring, end_net = _chain_end(end, "end", back)
+    if image is not None:
+        shapes = [shape.base_for_blend() for shape in shapes]
     edited = [shape.control() if shape.edited else None for shape in shapes]
     complex_ = kernel.blend_chain([shape._revolution() for shape in shapes], edited, start_ring, end_ring, start_net,
                                   end_net, method, True)
-    return blend_result(complex_, single=not any(e is not None for e in edited))
+    return blend_result(_mapped(image, complex_), single=not any(e is not None for e in edited))
 
 
 def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
@@ -200,8 +267,12 @@ def join_naive(shape_a: BasicShape, shape_b: BasicShape) -> BlendResult:
     Hermite strip without reparameterization (its .surface is None: not C2)."""
     _check(shape_a, "C2", "rho")
     _check(shape_b, "C2", "rho")
-    complex_ = kernel.join_shapes(shape_a._revolution(), shape_b._revolution(), "rho", False, True)
-    return blend_result(complex_, single=False)
+    _revolving(shape_a)
+    _revolving(shape_b)
+    image = _common_image([shape_a, shape_b])
+    a, b = (s.base if image is not None else s for s in (shape_a, shape_b))
+    complex_ = kernel.join_shapes(a._revolution(), b._revolution(), "rho", False, True)
+    return blend_result(_mapped(image, complex_), single=False)
 
 
 __all__ = ["BlendResult", "blend_basic_shape", "blend_chain", "blend_naive", "freeform_knots", "join_basic_shapes",

@@ -54,7 +54,7 @@ def complex_c1(shape: BasicShape, freeform: Optional[SurfaceLike] = None, beta_t
     naive: the arcs only split and degree-raised, without eta (the baseline; not C1).
     at: "end" or "start" of the profile (the start: the profile run backwards)."""
     require_shape(shape)
-    ring = None if freeform is None else surface_from_part(freeform)
+    ring = freeform if freeform is None or isinstance(freeform, kernel.BSplineSurface) else surface_from_part(freeform)
     return kernel.blend_c1(shape._revolution(), ring, _beta_t(shape, beta_t), True, naive, at)
 
 

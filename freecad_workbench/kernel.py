@@ -96,6 +96,14 @@ cone = _kernel.cone
 torus = _kernel.torus
 ShapeOfRevolution = _kernel.ShapeOfRevolution
 G2Surface = _kernel.G2Surface
+BSplineCurve = _kernel.BSplineCurve  # a profile given as arrays (shapes.Revolution, the quadrics)
+BSplineSurface = _kernel.BSplineSurface  # a ring mapped back for an affine image (blend.py)
+RevolutionProfile = _kernel.RevolutionProfile
+revolution_profile = _kernel.revolution_profile
+revolution = _kernel.revolution
+shape_of_revolution = _kernel.shape_of_revolution
+image_g2 = _kernel.image_g2
+dupin_cyclide = _kernel.dupin_cyclide
 BlendComplex = _kernel.BlendComplex
 # Basic shapes blended into NURBS, C2 (blend.py) and C1 (blend_c1.py).
 ring_knots = _kernel.ring_knots
@@ -106,6 +114,9 @@ blend_torus = _kernel.blend_torus
 blend_chain = _kernel.blend_chain
 blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
+blend_shape = _kernel.blend_shape
+blend_cyclide = _kernel.blend_cyclide
+image_complex = _kernel.image_complex
 ring_knots_c1 = _kernel.ring_knots_c1
 blend_c1 = _kernel.blend_c1
 join_shapes_c1 = _kernel.join_shapes_c1
@@ -291,8 +302,9 @@ def surface_to_part(surface):
     return result
 
 
-def surface_from_part(surface):
-    """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact)."""
+def surface_from_part(surface, image=None):
+    """A kernel BSplineSurface from a Part.BSplineSurface or a face on one (exact); with
+    image = a 4 x 4 matrix M, its homogeneous poles under (w p, w) -> M (w p, w)."""
     import Part
 
     if isinstance(surface, Part.Shape):
@@ -305,6 +317,12 @@ def surface_from_part(surface):
     poles = np.array([[(p.x, p.y, p.z) for p in row] for row in surface.getPoles()], dtype=float)
     nu, nv = poles.shape[0], poles.shape[1]
     weights = np.array(surface.getWeights(), dtype=float).reshape(nu * nv)
+    if image is not None:
+        h = np.hstack([poles.reshape(nu * nv, 3) * weights[:, None], weights[:, None]]) @ np.asarray(image).T
+        if not np.all(h[:, 3] > 0):
+            raise InputError("the ring reaches where the shape's map has no positive weight (to infinity)")
+        weights = h[:, 3].copy()
+        poles = (h[:, :3] / weights[:, None]).reshape(nu, nv, 3)
     return _kernel.make_bspline_surface(
         np.ascontiguousarray(poles.reshape(nu * nv, 3)), weights, np.array(surface.getUKnots(), dtype=float),
         np.array(surface.getVKnots(), dtype=float), np.array(surface.getUMultiplicities(), dtype=np.int32),
@@ -398,6 +416,16 @@ def require_bounded(first, last, kind):
     """InputError for an unbounded parameter range (an untrimmed line or conic)."""
     if not (abs(first) < _INFINITE and abs(last) < _INFINITE):
         raise InputError(f"the {kind} is unbounded (parameters {first:g} to {last:g}): trim it first")
+
+
+def edge_bspline(edge):
+    """The edge's exact Part.BSplineCurve (rational where needed), restricted to the edge and
+    running the way the edge does in its wire (reversed for a reversed edge)."""
+    geom = _edge_bspline(edge)
+    if edge.Orientation == "Reversed":
+        geom = geom.copy()
+        geom.reverse()
+    return geom
 
 
 def _edge_bspline(edge):

@@ -502,6 +502,11 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile fractions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Profile from</source>
         <translation type="unfinished"></translation>
     </message>
@@ -554,6 +559,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/features/blend_shape.py"/>
+        <source>Revolution</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -158,6 +158,24 @@ void bindBlend(py::module_& m) {
       "A torus (0 < r < R) as a G2 rational bicubic surface: angles_u around the frame's z, angles_v around the "
       "tube (0 = outer equator).");
 
+  m.def(
+      "dupin_cyclide",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double c, double mu,
+         const Eigen::VectorXd& anglesU,
+         const Eigen::VectorXd& anglesV) { return dupinCyclide(frameOf(o, x, y), a, c, mu, anglesU, anglesV); },
+      "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a,
+      "A Dupin ring cyclide (c < mu < a) as a G2 rational bicubic surface: both families of curvature lines are "
+      "circles, angles_u and angles_v their partitions.");
+
+  m.def(
+      "blend_cyclide",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double c, double mu,
+         const Eigen::VectorXd& anglesU, const Eigen::VectorXd& anglesV, const std::string& method) {
+        return blendCyclide(frameOf(o, x, y), a, c, mu, anglesU, anglesV, methodOf(method));
+      },
+      "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
+      "Section 4.2 for a Dupin ring cyclide: C2 into its default (rational) ring at the last v angle.");
+
   py::class_<C2SexticSpline>(m, "C2SexticSpline", "Sextic pieces, C2 in homogeneous space (Section 4.1).")
       .def_readonly("bezier", &C2SexticSpline::bezier)
       .def_readonly("beta", &C2SexticSpline::beta)
@@ -329,6 +347,48 @@ void bindBlend(py::module_& m) {
              return s;
            }),
            "kind"_a, "origin"_a, "x"_a, "y"_a, "size0"_a, "size1"_a, "around"_a, "profile"_a);
+  py::class_<RevolutionProfile>(m, "RevolutionProfile",
+                                "A rational cubic profile in a half-plane bounded by the axis (issue 32).")
+      .def_property_readonly("origin", [](const RevolutionProfile& p) { return p.frame.origin; })
+      .def_property_readonly("x", [](const RevolutionProfile& p) { return p.frame.x; })
+      .def_property_readonly("y", [](const RevolutionProfile& p) { return p.frame.y; })
+      .def_property_readonly("z", [](const RevolutionProfile& p) { return p.frame.z; })
+      .def_readonly("cubic", &RevolutionProfile::cubic)
+      .def_readonly("knots", &RevolutionProfile::knots);
+  m.def("revolution_profile", &revolutionProfile, "curve"_a, "origin"_a, "axis"_a, "splits"_a = Eigen::VectorXd(),
+        "The profile of a B-spline curve of degree <= 3 about an axis (the parameters splits inserted as knots): "
+        "its Bézier pieces as (w rho, w z, w).");
+  m.def("revolution", &revolution, "profile"_a, "angles"_a,
+        "The profile revolved by the circle pieces of eq. (2): a G2 rational bicubic surface.");
+  m.def(
+      "shape_of_revolution",
+      [](const RevolutionProfile& p, const Eigen::VectorXd& around) { return ShapeOfRevolution::of(p, around); },
+      "profile"_a, "around"_a, "A Revolution of the profile over the angles, for the blends and joins.");
+  m.def(
+      "blend_shape",
+      [](const ShapeOfRevolution& shape, const std::string& method, const std::optional<BSplineSurface>& ring,
+         bool bothDirections, bool naive, const std::string& at) {
+        return blendShape(shape, methodOf(method), ringOf(ring), bothDirections, naive, interfaceOf(at));
+      },
+      "shape"_a, "method"_a = "rho", "ring"_a = py::none(), "both_directions"_a = true, "naive"_a = false,
+      "at"_a = "end", "Section 4.2 for any shape of revolution (a Revolution too); naive: the Fig. 2a baseline.");
+  m.def(
+      "image_g2",
+      [](const G2Surface& g2, const Eigen::Matrix4d& M) {
+        G2Surface out = g2;
+        out.bezier = projectiveImage(g2.bezier, M);
+        return out;
+      },
+      "g2"_a, "matrix"_a, "The G2 structure under (w p, w) -> M (w p, w): affine or projective, exact.");
+  m.def(
+      "image_complex",
+      [](const BlendComplex& c, const Eigen::Matrix4d& M) {
+        BlendComplex out = c;
+        for (TaggedPatch& p : out.patches) p.bezier = projectiveImage(p.bezier, M);
+        return out;
+      },
+      "complex"_a, "matrix"_a,
+      "The blend complex under (w p, w) -> M (w p, w): the blend of the image (the construction commutes with it).");
   m.def(
       "join_shapes",
       [](const ShapeOfRevolution& a, const ShapeOfRevolution& b, const std::string& method, bool bothDirections,

@@ -6,8 +6,13 @@ zebra shading so that the seams can be judged (gui/blend_commands.py).
 
     from freecad_workbench.features.blend_shape import make_blend_shape
     blend = make_blend_shape(doc, "Torus", MajorRadius=20, MinorRadius=5)
+    vase = make_blend_shape(doc, "Revolution", profile=sketch)   # a sketch's edges revolved
 
-The shape lies around the Z axis of the object's Placement. Angles are in degrees: around
+The shape lies around the Z axis of the object's Placement. A Revolution revolves its
+`Profile` (a sketch, a Design spline, any edges in a plane through that axis; empty: a
+parabola), the part of it between the first and last `ProfileFractions` of its parameter
+range, split at the others (Uniform: `ProfileCount` equal pieces from the fraction
+`ProfileStart` to `ProfileEnd`). Angles are in degrees: around
 the axis a full turn or part of one (the partition may be non-uniform), along the profile latitudes
 (sphere zone) or tube angles (torus); heights (cylinder, cone) are lengths. With `Uniform`
 on, the lists are generated from `AroundCount` arcs over the full turn and `ProfileCount`
@@ -44,6 +49,7 @@ KINDS = (
     QT_TRANSLATE_NOOP("FairSplines", "Cylinder"),
     QT_TRANSLATE_NOOP("FairSplines", "Cone"),
     QT_TRANSLATE_NOOP("FairSplines", "Torus"),
+    QT_TRANSLATE_NOOP("FairSplines", "Revolution"),
 )
 METHODS = ("rho", "sigma", "mixed")
 INTERFACES = (
@@ -60,15 +66,18 @@ KIND_LENGTHS = {
     "Cylinder": ("Radius",),
     "Cone": ("Radius0", "Slope"),
     "Torus": ("MajorRadius", "MinorRadius"),
+    "Revolution": (),
 }
 KIND_LISTS = {
     "Sphere zone": ("Longitudes", "Latitudes"),
     "Cylinder": ("Angles", "Heights"),
     "Cone": ("Angles", "Heights"),
     "Torus": ("AnglesU", "AnglesV"),
+    "Revolution": ("Angles", "ProfileFractions"),
 }
-# Whether the profile list of a kind holds angles (degrees) rather than lengths.
-PROFILE_IN_DEGREES = {"Sphere zone": True, "Cylinder": False, "Cone": False, "Torus": True}
+# Whether the profile list of a kind holds angles (degrees) rather than lengths (a
+# Revolution's: fractions of its profile's parameter range).
+PROFILE_IN_DEGREES = {"Sphere zone": True, "Cylinder": False, "Cone": False, "Torus": True, "Revolution": False}
 UNIFORM_PROPERTIES = ("AroundCount", "ProfileCount", "ProfileStart", "ProfileEnd")
 KIND_PROPERTIES = {k: KIND_LENGTHS[k] + KIND_LISTS[k] + UNIFORM_PROPERTIES for k in KINDS}
 
@@ -87,6 +96,8 @@ KIND_DEFAULTS = {
                  ProfileStart=0.0, ProfileEnd=12.0),
     "Torus": dict(MajorRadius=20.0, MinorRadius=5.0, AnglesU=_uniform(0.0, 360.0, 6),
                   AnglesV=[-90.0, -30.0, 30.0, 90.0], ProfileStart=-90.0, ProfileEnd=90.0),
+    "Revolution": dict(Angles=_uniform(0.0, 360.0, 6), ProfileFractions=[0.0, 1.0 / 3, 2.0 / 3, 1.0],
+                       ProfileStart=0.0, ProfileEnd=1.0),
 }
 for _values in KIND_DEFAULTS.values():
     _values.update(AroundCount=6, ProfileCount=3)
@@ -110,13 +121,19 @@ _PROPERTIES = (
      "(degrees)", None, 0),
     ("App::PropertyFloatList", "AnglesV", "Torus: increasing angles around the tube, 0 = outer equator, less "
      "than a full turn (degrees); the ring joins at the last", None, 0),
+    ("App::PropertyLinkSub", "Profile", "Revolution: the profile, a sketch (its edges, joined end to end), a Design "
+     "spline or any edge, in a plane through the Z axis of the Placement and off it (empty: a parabola "
+     "z = r^2 / 40 from r = 4 to 12)", None, 0),
+    ("App::PropertyFloatList", "ProfileFractions", "Revolution: increasing fractions of the profile's parameter "
+     "range (0 its start, 1 its end): the part revolved, split into rows there too", None, 0),
     ("App::PropertyBool", "Uniform", "Generate the lists: AroundCount equal arcs around, ProfileCount equal "
      "pieces from ProfileStart to ProfileEnd", True, 0),
     ("App::PropertyInteger", "AroundCount", "Uniform: number of arcs around the axis", 6, 0),
     ("App::PropertyInteger", "ProfileCount", "Uniform: number of pieces along the profile", 3, 0),
-    ("App::PropertyFloat", "ProfileStart", "Uniform: start of the profile (degrees, or a height)", None, 0),
+    ("App::PropertyFloat", "ProfileStart", "Uniform: start of the profile (degrees, or a height; Revolution: a "
+     "fraction of its parameter range)", None, 0),
     ("App::PropertyFloat", "ProfileEnd", "Uniform: end of the profile, where the ring joins (degrees, or a "
-     "height)", None, 0),
+     "height; Revolution: a fraction of its parameter range)", None, 0),
     ("App::PropertyEnumeration", "Method", "Reparameterization of the transition (Section 3): rho, sigma or "
      "mixed", "rho", 0),
     ("App::PropertyEnumeration", "Continuity", "C2: the (6,5) strip of Section 4.2 to bicubic NURBS; C1: the (4,2) "
@@ -176,6 +193,8 @@ def show_kind_properties(obj):
         return
     used = set(KIND_LENGTHS.get(obj.Kind, ()))
     used |= set(UNIFORM_PROPERTIES) if obj.Uniform else set(KIND_LISTS.get(obj.Kind, ()))
+    if "Profile" in obj.PropertiesList:
+        obj.setEditorMode("Profile", 0 if obj.Kind == "Revolution" else 2)
     for name in _DIMENSIONS:
         if name in obj.PropertiesList:
             obj.setEditorMode(name, 0 if name in used else 2)
@@ -223,6 +242,9 @@ def basic_shape(obj, placement=None):
     frame = dict(axis=tuple(placement.Rotation.multVec(FreeCAD.Vector(0, 0, 1))),
                  x_axis=tuple(placement.Rotation.multVec(FreeCAD.Vector(1, 0, 0))))
     center = tuple(placement.Base)
+    if obj.Kind == "Revolution":
+        curve, splits = _profile_part(obj, profile, placement)
+        return shapes.Revolution(curve, center, frame["axis"], around, splits)
     if obj.Kind == "Sphere zone":
         return shapes.SphereZone(center, _length(obj.Radius), around, profile, **frame)
     if obj.Kind == "Cylinder":
@@ -230,6 +252,51 @@ def basic_shape(obj, placement=None):
     if obj.Kind == "Cone":
         return shapes.Cone(center, _length(obj.Radius0), float(obj.Slope), around, profile, **frame)
     return shapes.Torus(center, _length(obj.MajorRadius), _length(obj.MinorRadius), around, profile, **frame)
+
+
+def _default_profile():
+    """The parabola z = r^2 / 40 from r = 4 to 12 in the XZ plane: the Revolution's profile
+    while none is linked."""
+    curve = Part.BSplineCurve()
+    poles = [FreeCAD.Vector(4, 0, 0.4), FreeCAD.Vector(8, 0, 1.2), FreeCAD.Vector(12, 0, 3.6)]
+    curve.buildFromPolesMultsKnots(poles, [3, 3], [0.0, 1.0], False, 2)
+    return curve
+
+
+def _profile_part(obj, fractions, placement):
+    """(the Part curve or shape of obj's profile in the coordinates of `placement` (None:
+    obj's local ones), trimmed to the first and last fraction of its parameter range, and
+    the inner fractions as parameters to split at)."""
+    link = obj.Profile
+    if link is None or link[0] is None:
+        profile = _default_profile()
+    else:
+        source, subs = link
+        shape = getattr(source, "Shape", None)
+        if shape is None or shape.isNull():
+            raise InputError(f"Profile {source.Label} has no shape")
+        edges = [shape.getElement(sub) for sub in subs if sub] if subs and any(subs) else shape.Edges
+        if not edges:
+            raise InputError(f"Profile {source.Label} has no edges")
+        moved = Part.Compound(edges).copy()
+        to_local = obj.Placement.inverse()
+        if placement is not None:
+            to_local = placement.multiply(to_local)
+        moved.transformShape(to_local.toMatrix())
+        profile = shapes.joined_profile(moved)
+    for f in fractions:
+        if not 0.0 <= f <= 1.0:
+            raise InputError(f"ProfileFractions: {f:g} is not in [0, 1] (fractions of the profile's parameter range)")
+    if link is None or link[0] is None:
+        if placement is not None:
+            profile = profile.copy()
+            profile.transform(placement.toMatrix())
+    a, b = profile.FirstParameter, profile.LastParameter
+    t = [a + f * (b - a) for f in fractions]
+    if t[0] > a or t[-1] < b:
+        profile = profile.copy()
+        profile.segment(t[0], t[-1])
+    return profile, t[1:-1]
 
 
 def freeform_surface(obj, name="FreeForm"):
@@ -321,7 +388,8 @@ def _face_link(freeform, name):
 
 
 def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method="rho", naive=False, freeform=None,
-                     interface="Auto", join_to=None, continuity="C2", freeform_start=None, **dimensions):
+                     interface="Auto", join_to=None, continuity="C2", freeform_start=None, profile=None,
+                     **dimensions):
     """Create a Blend basic shape of the given kind in `doc` and recompute, as one undoable
     step. Dimensions not given take the kind's defaults (KIND_DEFAULTS): lengths in model
     units, angle lists in degrees. Giving any of the kind's lists turns Uniform off unless
@@ -330,7 +398,8 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
     (freeform_start: the face at the start for "Both ends"). Bad
     dimensions leave the object with the message in its Status; unknown kinds, methods,
     interfaces or dimensions raise InputError. join_to: another Blend basic shape to join
-    (its basic shape instead of a ring; its own view is hidden in the GUI)."""
+    (its basic shape instead of a ring; its own view is hidden in the GUI). profile: a
+    Revolution's profile, an object (a sketch, a Design spline) or (object, "EdgeN")."""
     if kind not in KINDS:
         raise InputError(f"unknown kind {kind!r}: use one of {', '.join(KINDS)}")
     if method not in METHODS:
@@ -350,6 +419,7 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
     if "Uniform" not in dimensions:
         values["Uniform"] = not any(p in dimensions for p in KIND_LISTS[kind])
     link_start = None if freeform_start is None else _face_link(freeform_start, "freeform_start")
+    profile_link = None if profile is None else _face_link(profile, "profile")
     with undo_step(doc, "Create blend basic shape"):
         obj = doc.addObject("Part::FeaturePython", name or "BlendShape")
         BlendShape(obj)
@@ -362,6 +432,8 @@ def make_blend_shape(doc, kind="Sphere zone", name=None, placement=None, method=
             obj.FreeForm = link
         if link_start is not None:
             obj.FreeFormStart = link_start
+        if profile_link is not None:
+            obj.Profile = profile_link
         if join_to is not None:
             obj.JoinTo = join_to
             if FreeCAD.GuiUp:

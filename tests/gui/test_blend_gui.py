@@ -220,6 +220,24 @@ def test_panel_cancel_restores_the_blend(scene):
     assert not gui().Control.activeDialog()
 
 
+def test_panel_switches_to_a_revolution_and_edits_its_profile_fractions(scene):
+    # Issue 32: the Revolution kind (its default parabola profile while none is linked) in
+    # the panel: uniform rows, then the fractions as a list; Cancel restores the sphere.
+    doc = scene
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    panel.set_kind("Revolution")
+    assert blend.Kind == "Revolution" and blend.Status == "ok", blend.Status
+    assert "basic 18" in blend.Patches
+    panel.set_uniform(False)
+    assert "ProfileFractions" in panel.widgets
+    panel.set_list_text("ProfileFractions", "0, 0.5, 1")
+    assert blend.Status == "ok" and "basic 12" in blend.Patches
+    panel.reject()
+    gui().updateGui()
+    assert blend.Kind == "Sphere zone" and blend.Status == "ok"
+
+
 def test_double_click_opens_the_panel_and_error_shows_the_error_icon(scene):
     from freecad_workbench.gui import icon_path
     from freecad_workbench.gui.panels.blend_shape import BlendShapePanel

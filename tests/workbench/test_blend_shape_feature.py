@@ -403,3 +403,35 @@ def test_a_join_with_free_form_below_the_first_shape(doc):
     post.Interface = "End"
     doc.recompute()
     assert "pole" in post.Status
+
+
+def test_a_revolution_of_a_sketch_like_profile_blends_and_follows_it(doc):
+    # Issue 32: the Revolution kind revolves a linked profile (here a shape of a line and a
+    # tangent arc, as a sketch's edges), exactly, and recomputes when the profile moves.
+    import math
+
+    import Part
+
+    h = math.sqrt(0.5)
+    line = Part.LineSegment(FreeCAD.Vector(4, 0, 0), FreeCAD.Vector(4, 0, 3)).toShape()
+    arc = Part.Arc(FreeCAD.Vector(4, 0, 3), FreeCAD.Vector(5 - h, 0, 3 + h), FreeCAD.Vector(5, 0, 4)).toShape()
+    source = doc.addObject("Part::Feature", "ProfileSource")
+    source.Shape = Part.Compound([line, arc])
+    obj = make_blend_shape(doc, "Revolution", profile=source)
+    assert obj.Status == "ok", obj.Status
+    assert obj.Shape.isValid()
+    # the macro API's blend of the same profile, split at thirds of its parameter range
+    curve = fw.shapes.joined_profile(source.Shape)
+    a, b = curve.FirstParameter, curve.LastParameter
+    shape = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), np.radians(np.linspace(0, 360, 7)),
+                                 [a + (b - a) / 3, a + 2 * (b - a) / 3])
+    expected = fw.blend_basic_shape(shape).shell
+    np.testing.assert_allclose(surface_points(obj.Shape), surface_points(expected), atol=1e-12)
+    source.Placement.Base = FreeCAD.Vector(0, 0, 1)
+    doc.recompute()
+    assert obj.Status == "ok" and surface_points(obj.Shape)[:, 2].min() > 0.9
+    bad = doc.addObject("Part::Feature", "Crossing")
+    bad.Shape = Part.LineSegment(FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(-1, 0, 1)).toShape()
+    obj.Profile = bad
+    doc.recompute()
+    assert "axis" in obj.Status

@@ -11,6 +11,7 @@
 #include "fairsplines/errors.hpp"
 #include "fairsplines/g1_to_c1.hpp"
 #include "blend_detail.hpp"
+#include "blend_surface_detail.hpp"
 
 namespace fairsplines {
 
@@ -136,7 +137,7 @@ struct ProfileRows {
 ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
   ProfileRows out;
   const int m = shape.piecesV();
-  if (quarticInV && !shape.profileIsLine) {
+  if (quarticInV && !shape.profileIsLine && !shape.profileIsCurve) {
     PointMatrix stacked(3 * m, 3);
     for (int j = 0; j < m; ++j) stacked.middleRows(3 * j, 3) = shape.profile[j];
     const C1QuarticSpline c1 = g1ToC1(stacked, shape.profileBeta, shape.profileBeta, false);
@@ -155,6 +156,7 @@ ProfileRows profileRows(const G1RevolvedShape& shape, bool quarticInV) {
     out.rows = shape.profile;
     out.knots = shape.profileKnots;
     out.c1 = shape.profileIsLine;
+    out.degree = static_cast<int>(shape.profile.front().rows()) - 1;
   }
   return out;
 }
@@ -224,7 +226,7 @@ TaggedPatch G1RevolvedShape::patch(int i, int j) const {
   if (i < 0 || i >= piecesU() || j < 0 || j >= piecesV()) throw InputError("no such patch");
   TaggedPatch p;
   p.degreeU = 2;
-  p.degreeV = 2;
+  p.degreeV = static_cast<int>(profile[j].rows()) - 1;
   p.uPiece = i;
   p.vPiece = j;
   p.bezier = revolveRows(frame, circle.middleRows(3 * i, 3), profile[j]);
@@ -435,8 +437,37 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
   return out;
 }
 
+G1RevolvedShape g1Revolution(const ShapeFrame& frame, const Eigen::VectorXd& angles, const Homogeneous3& cubic,
+                             const Eigen::VectorXd& knots) {
+  G1RevolvedShape s;
+  aroundAxis(s, frame, angles);
+  // The C2 profile's pieces and interface data (curveProfile); the cubic pieces are kept here.
+  const detail::RevolvedProfile p = detail::curveProfile(cubic, knots);
+  const int m = static_cast<int>(p.cubic.size());
+  s.profile = p.cubic;
+  s.profileBeta = Eigen::VectorXd::Ones(m);
+  for (int j = 1; j < m; ++j) s.profileBeta[j] = (knots[j + 1] - knots[j]) / (knots[j] - knots[j - 1]);
+  s.profileKnots = knots.array() - knots[0];
+  s.profileIsCurve = true;
+  // C1 in homogeneous space across every knot (the B-spline's simple and double knots).
+  s.profileIsLine = true;
+  for (int j = 1; j < m; ++j) {
+    const double h0 = knots[j] - knots[j - 1], h1 = knots[j + 1] - knots[j];
+    s.profileIsLine = s.profileIsLine && detail::joinsHomogeneousC(1, p.cubic[j - 1], p.cubic[j], h0, h1);
+  }
+  s.end = p.end;
+  s.tangent = p.tangent;
+  s.size = p.size;
+  s.start = p.start;
+  s.startTangent = p.startTangent;
+  s.startSize = p.startSize;
+  return s;
+}
+
 G1RevolvedShape g1Shape(const ShapeOfRevolution& shape) {
   switch (shape.kind) {
+    case ShapeOfRevolution::Kind::Revolution:
+      return g1Revolution(shape.frame, shape.around, shape.curve, shape.profile);
     case ShapeOfRevolution::Kind::SphereZone:
       return g1SphereZone(shape.frame, shape.size0, shape.around, shape.profile);
     case ShapeOfRevolution::Kind::Cone:

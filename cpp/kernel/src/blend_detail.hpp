@@ -42,6 +42,39 @@ void setLineEnds(Profile& p, double radius0, double slope, const Eigen::VectorXd
   p.startSize = heights[1] - heights[0];
 }
 
+/// The interface data of a rational cubic profile (issue 32; Bézier pieces of 4 homogeneous
+/// rows (w rho, w zeta, w)), for the C2 and the C1 shapes alike: (rho, zeta) at the last and
+/// first point, the unit direction leaving each (the projected end derivative), and the
+/// length of the end pieces' control polygons.
+template <class Profile>
+void setCurveEnds(Profile& p, const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& first,
+                  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& last) {
+  auto point = [](const Eigen::RowVector3d& h) { return Eigen::Vector2d(h[0] / h[2], h[1] / h[2]); };
+  auto polygon = [&](const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& q) {
+    double length = 0.0;
+    for (Eigen::Index k = 1; k < q.rows(); ++k) length += (point(q.row(k)) - point(q.row(k - 1))).norm();
+    return length;
+  };
+  // The projected derivative at an end b_n leaving towards the direction of b_n - b_{n-1}
+  // (the first inner point that differs): (d_xy - d_w p) / w, d = b_n - b_k.
+  auto leaving = [&](const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>& q, bool atEnd) {
+    const Eigen::Index n = q.rows() - 1;
+    const Eigen::RowVector3d b = atEnd ? q.row(n) : q.row(0);
+    for (Eigen::Index k = 1; k <= n; ++k) {
+      const Eigen::RowVector3d d = b - (atEnd ? q.row(n - k) : q.row(k));
+      const Eigen::Vector2d v = (Eigen::Vector2d(d[0], d[1]) - d[2] * point(b)) / b[2];
+      if (v.norm() > 1e-14 * (point(b).norm() + polygon(q))) return Eigen::Vector2d(v.normalized());
+    }
+    return Eigen::Vector2d(0.0, atEnd ? 1.0 : -1.0);
+  };
+  p.end = point(last.row(last.rows() - 1));
+  p.tangent = leaving(last, true);
+  p.size = polygon(last);
+  p.start = point(first.row(0));
+  p.startTangent = leaving(first, false);
+  p.startSize = polygon(first);
+}
+
 /// Heights of a cylinder or cone profile (radius radius0 + slope z): at least two, finite,
 /// increasing, with a positive radius at each. Throws InputError naming the first offender.
 void checkHeights(const Eigen::VectorXd& heights, double radius0, double slope);

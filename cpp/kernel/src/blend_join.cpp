@@ -44,6 +44,9 @@ JoinSide joinSide(const ShapeOfRevolution& shape, CircleReparam method) {
     case ShapeOfRevolution::Kind::Torus:
       side.profile = torusProfile(shape.size0, shape.size1, shape.profile, method);
       break;
+    case ShapeOfRevolution::Kind::Revolution:
+      side.profile = detail::curveProfile(shape.curve, shape.profile);
+      break;
   }
   return side;
 }

@@ -2,6 +2,7 @@
 // the tensor rows of a revolved shape: Karčiauskas & Peters, Section 4.1 (the C2 sextic
 // pieces of a circle), eq. (2) (its G2 cubic pieces); see blend_surface_detail.hpp.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -127,6 +128,136 @@ RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, C
 RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV, CircleReparam method) {
   if (!(r > 0) || !(R > r) || !std::isfinite(R)) throw InputError("a torus needs radii 0 < r < R");
   return circleProfile(R, r, anglesV, method);
+}
+
+bool joinsHomogeneousC(int order, const Homogeneous3& a, const Homogeneous3& b, double h0, double h1) {
+  const double scale = std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff());
+  const bool c1 = ((b.row(1) - b.row(0)) / h1 - (a.row(3) - a.row(2)) / h0).norm() <= 1e-9 * scale / std::min(h0, h1);
+  if (order < 2 || !c1) return c1;
+  return ((b.row(2) - 2 * b.row(1) + b.row(0)) / (h1 * h1) - (a.row(3) - 2 * a.row(2) + a.row(1)) / (h0 * h0)).norm() <=
+         1e-9 * scale / std::min(h0 * h0, h1 * h1);
+}
+
+namespace {
+
+/// The identity reparameterization in the normal form of Appendix 7.1: h_k = (k/3, 1).
+Reparam identityMap() {
+  Reparam h;
+  h << 0.0, 1.0, 1.0 / 3, 1.0, 2.0 / 3, 1.0, 1.0, 1.0;
+  return h;
+}
+
+/// Whether the map r = rbar / rlow is a monotone reparameterization of its part of [0, 1]
+/// (positive denominator, increasing), on 33 samples.
+bool monotoneMap(const Reparam& r) {
+  double last = -1.0;
+  for (int k = 0; k <= 32; ++k) {
+    const double u = k / 32.0, v = 1 - u, b[4] = {v * v * v, 3 * u * v * v, 3 * u * u * v, u * u * u};
+    double num = 0.0, den = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      num += b[i] * r(i, 0);
+      den += b[i] * r(i, 1);
+    }
+    if (!(den > 0) || !(num / den > last)) return false;
+    last = num / den;
+  }
+  return true;
+}
+
+/// Section 4.1 at a profile join that is G2 but not C2 in homogeneous space: Appendix 7.2
+/// generalised from circle arcs to any rational pieces. The left piece keeps the identity
+/// map; the right piece gets the map h (normal form, h_0 = (0,1), h_3 = (1,1)) whose 2-jet
+/// at 0, composed with the right piece's Hermite quadratic Q at 0 (eq. (9): with s = rlow -
+/// rbar, t = rbar, F = Q_0 s^2 + 2 Q_1 s t + Q_2 t^2), continues the left piece C2 with
+/// scalar beta: F(0) = L(1), F'(0) = beta L'(1), F''(0) = beta^2 L''(1). At s = 1, t = 0:
+///   F' = 2 (Q_0 s' + Q_1 t'),  F'' = 2 (Q_0 s'^2 + 2 Q_1 s' t' + Q_2 t'^2) + 2 (Q_0 s'' + Q_1 t''),
+/// two 3 x 2 systems for (s', t') and (s'', t''), consistent exactly when the projected
+/// pieces join G2. The map's first third is all the rho split uses of it at this end.
+/// Returns false where the systems are inconsistent (less than G2) or the split maps are
+/// not monotone: the caller falls back to eq. (11).
+bool g2StartMap(const Homogeneous3& left, const Homogeneous3& right, double beta, std::array<Reparam, 3>& split) {
+  const PointMatrix Q = hermiteQuadratic(PointMatrix(right), 0.0);
+  const Eigen::Vector3d L0 = left.row(3).transpose(), L1 = 3 * (left.row(3) - left.row(2)).transpose(),
+                        L2 = 6 * (left.row(3) - 2 * left.row(2) + left.row(1)).transpose();
+  const Eigen::Vector3d Q0 = Q.row(0).transpose(), Q1 = Q.row(1).transpose(), Q2 = Q.row(2).transpose();
+  const double scale = std::max(L0.norm(), Q0.norm());
+  if (!((L0 - Q0).norm() <= 1e-9 * scale)) return false;  // not C0 in homogeneous space
+  Eigen::Matrix<double, 3, 2> A;
+  A << Q0, Q1;
+  const auto qr = A.colPivHouseholderQr();
+  const Eigen::Vector3d g1 = beta * L1 / 2;
+  const Eigen::Vector2d d1 = qr.solve(g1);
+  if (!((A * d1 - g1).norm() <= 1e-9 * (g1.norm() + scale))) return false;
+  const double s1 = d1[0], t1 = d1[1];
+  const Eigen::Vector3d g2 = (beta * beta * L2 - 2 * (Q0 * s1 * s1 + 2 * Q1 * s1 * t1 + Q2 * t1 * t1)) / 2;
+  const Eigen::Vector2d d2 = qr.solve(g2);
+  if (!((A * d2 - g2).norm() <= 1e-9 * (g2.norm() + beta * beta * L2.norm() + scale))) return false;
+  // (rbar, rlow) = (t, s + t): its Bézier points from the 2-jet at 0.
+  const Eigen::RowVector2d h0(0.0, 1.0), dh(t1, s1 + t1), ddh(d2[1], d2[0] + d2[1]);
+  Reparam h;
+  h.row(0) = h0;
+  h.row(1) = h0 + dh / 3;
+  h.row(2) = 2 * h.row(1) - h0 + ddh / 6;
+  h.row(3) << 1.0, 1.0;
+  split = rhoSplitFromMaps(h, identityMap());
+  return monotoneMap(split[0]) && monotoneMap(split[1]) && monotoneMap(split[2]);
+}
+
+}  // namespace
+
+RevolvedProfile curveProfile(const Homogeneous3& cubic, const Eigen::VectorXd& knots, std::vector<int>* adjusted) {
+  const int m = static_cast<int>(cubic.rows() / 4);
+  if (m < 1 || cubic.rows() != 4 * m || knots.size() != m + 1) {
+    throw InputError("a profile needs 4 homogeneous Bézier points per piece and one knot more than pieces");
+  }
+  for (int j = 0; j < m; ++j) {
+    if (!(knots[j + 1] > knots[j])) throw InputError("the profile's knots must increase");
+  }
+  RevolvedProfile p;
+  for (int j = 0; j < m; ++j) p.cubic.push_back(cubic.middleRows(4 * j, 4));
+  // Per join: C2 in homogeneous space as it is (eqs. (3)-(4) with beta = h_j / h_{j-1},
+  // gamma = 0: the identity map, a degree raise), G2 (the right piece reparameterized by
+  // g2StartMap and split in three, conic pieces staying exact), or less (eq. (11)).
+  std::vector<int> kind(m, 0);  // 0: C2 at the piece's start, 1: g2StartMap, 2: eq. (11)
+  std::vector<std::array<Reparam, 3>> maps(m);
+  for (int j = 1; j < m; ++j) {
+    const double h0 = knots[j] - knots[j - 1], h1 = knots[j + 1] - knots[j];
+    if (joinsHomogeneousC(2, p.cubic[j - 1], p.cubic[j], h0, h1)) continue;
+    kind[j] = g2StartMap(p.cubic[j - 1], p.cubic[j], h1 / h0, maps[j]) ? 1 : 2;
+  }
+  std::vector<double> t{0.0};
+  std::vector<int> first(m);
+  for (int j = 0; j < m; ++j) {
+    first[j] = static_cast<int>(p.sextic.size());
+    const double L = knots[j + 1] - knots[j];
+    if (kind[j] == 1) {
+      // Section 4.1 for this piece: its Hermite quadratics composed with the three maps
+      // (eq. (9)) and merged (eq. (10)); the thirds join C2 with scalar 1.
+      const C2SexticSpline c2 = g2ToC2(PointMatrix(p.cubic[j]), {std::vector<Reparam>(maps[j].begin(), maps[j].end())},
+                                       Eigen::VectorXd::Ones(1), false);
+      for (int k = 0; k < 3; ++k) {
+        p.sextic.push_back(Homogeneous3(c2.bezier.middleRows(7 * k, 7)));
+        t.push_back(t.back() + L / 3);
+      }
+    } else {
+      p.sextic.push_back(Homogeneous3(raiseCubicToSextic(PointMatrix(p.cubic[j]))));
+      t.push_back(t.back() + L);
+    }
+  }
+  p.sexticKnots = Eigen::Map<const Eigen::VectorXd>(t.data(), static_cast<Eigen::Index>(t.size()));
+  for (int j = 1; j < m; ++j) {
+    if (kind[j] != 2) continue;
+    // Less than G2: the identity map on both sides, then eq. (11) at their C0 interface.
+    const int k = first[j];
+    const double h0 = p.sexticKnots[k] - p.sexticKnots[k - 1], h1 = p.sexticKnots[k + 1] - p.sexticKnots[k];
+    PointMatrix left = p.sextic[k - 1], right = p.sextic[k];
+    adjustC2(left, right, h1 / h0);
+    p.sextic[k - 1] = Homogeneous3(left);
+    p.sextic[k] = Homogeneous3(right);
+    if (adjusted) adjusted->push_back(j);
+  }
+  setCurveEnds(p, p.cubic.front(), p.cubic.back());
+  return p;
 }
 
 // ---------------------------------------------------------------------------------------

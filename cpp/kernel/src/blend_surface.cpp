@@ -278,4 +278,12 @@ BlendComplex blendTorus(const ShapeFrame& frame, double R, double r, const Eigen
   return naive ? blendRevolvedNaive(frame, lon, p, ring) : blendRevolved(frame, lon, p, method, ring, sexticInV);
 }
 
+BlendComplex blendShape(const ShapeOfRevolution& shape, CircleReparam method, Handle(Geom_BSplineSurface) ring,
+                        bool sexticInV, bool naive, Interface at) {
+  const detail::JoinSide side = detail::joinSide(shape, method);
+  const RevolvedProfile p = atInterface(side.profile, at, ring.IsNull());
+  return naive ? blendRevolvedNaive(side.frame, side.lon, p, ring)
+               : blendRevolved(side.frame, side.lon, p, method, ring, sexticInV);
+}
+
 }  // namespace fairsplines

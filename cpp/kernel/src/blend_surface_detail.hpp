@@ -49,6 +49,21 @@ RevolvedProfile sphereProfile(double radius, const Eigen::VectorXd& latitudes, C
 /// InputError unless 0 < r < R, R finite.
 RevolvedProfile torusProfile(double R, double r, const Eigen::VectorXd& anglesV, CircleReparam method);
 
+/// Whether cubic pieces a (over an interval of length h0) and b (h1 after it) join C^order
+/// (1 or 2) in homogeneous space: their derivatives in the curve's parameter at the knot
+/// agree within 1e-9 of the pieces' homogeneous size (eqs. (3)-(4) with beta = h1 / h0,
+/// gamma = 0). Throws nothing.
+bool joinsHomogeneousC(int order, const Homogeneous3& a, const Homogeneous3& b, double h0, double h1);
+
+/// A Revolution's profile (issue 32): the rational cubic pieces as they are and, for the C2
+/// rows, each raised to degree 6 over the curve's knots (the identity map of Section 4.1). At
+/// a join that is not C2 in homogeneous space (a multiple knot: the profile G2 or less there)
+/// the two sextics are made C2 by eq. (11) with beta = the knot ratio; `adjusted` receives
+/// the indices of those joins. Throws InputError for fewer than one piece or knots that do
+/// not increase.
+RevolvedProfile curveProfile(const Homogeneous3& cubic, const Eigen::VectorXd& knots,
+                             std::vector<int>* adjusted = nullptr);
+
 /// The profile with the interface at its end: as it is (Interface::End) or reversed.
 /// Throws InputError where that end (the interface) lies on the axis.
 /// Interface::Auto picks the end unless it lies on the axis, or, with `defaultRing`, unless

@@ -54,6 +54,7 @@ _LABELS = {
     "ProfileCount": QT_TRANSLATE_NOOP("FairSplines", "Profile pieces"),
     "ProfileStart": QT_TRANSLATE_NOOP("FairSplines", "Profile from"),
     "ProfileEnd": QT_TRANSLATE_NOOP("FairSplines", "Profile to"),
+    "ProfileFractions": QT_TRANSLATE_NOOP("FairSplines", "Profile fractions"),
 }
 
 # The long words of the short labels above.

@@ -19,13 +19,16 @@ namespace fairsplines {
 /// Patch (i, j) is the tensor product of arc i and profile piece j (revolveRows).
 struct G1RevolvedShape {
   ShapeFrame frame;
-  Eigen::VectorXd theta;                ///< angles around the axis (arc i: theta[i] .. theta[i+1])
-  PointMatrix circle;                   ///< 3 homogeneous rows (x w, y w, w) per arc, unit circle
-  Eigen::VectorXd beta;                 ///< G1 scalars around the axis (beta[i] between arcs i-1 and i)
-  bool closedU = false;                 ///< a full turn
-  std::vector<Homogeneous3> profile;    ///< 3 rows (rho w, zeta w, w) per profile piece
-  Eigen::VectorXd profileBeta;          ///< G1 scalars of the profile (beta[j] between j-1 and j)
-  bool profileIsLine = false;           ///< lines: the profile is C1 over profileKnots as it is
+  Eigen::VectorXd theta;              ///< angles around the axis (arc i: theta[i] .. theta[i+1])
+  PointMatrix circle;                 ///< 3 homogeneous rows (x w, y w, w) per arc, unit circle
+  Eigen::VectorXd beta;               ///< G1 scalars around the axis (beta[i] between arcs i-1 and i)
+  bool closedU = false;               ///< a full turn
+  std::vector<Homogeneous3> profile;  ///< 3 rows (rho w, zeta w, w) per profile piece
+  Eigen::VectorXd profileBeta;        ///< G1 scalars of the profile (beta[j] between j-1 and j)
+  bool profileIsLine = false;         ///< lines: the profile is C1 over profileKnots as it is
+  /// a Revolution's rational cubic profile (issue 32): its pieces kept as they are (degree 3
+  /// in v, never converted by eq. (12)); profileIsLine tells whether they join C1
+  bool profileIsCurve = false;
   Eigen::VectorXd profileKnots;         ///< lines: the heights (from 0); circles: 0, 1, ..., m
   Eigen::Vector2d end, tangent;         ///< (rho, zeta) at the profile's end, unit direction leaving it
   double size = 1.0;                    ///< length of the last profile piece (for the default ring)
@@ -110,6 +113,12 @@ BlendComplex blendC1(const G1RevolvedShape& shape, Handle(Geom_BSplineSurface) r
 /// The G1 biquadratic form of a shape of revolution described for the joins.
 /// Throws the InputError of g1SphereZone, g1Cone or g1Torus for the shape's kind.
 G1RevolvedShape g1Shape(const ShapeOfRevolution& shape);
+
+/// A Revolution (issue 32) in the G1 model: the quadratic arcs of g1Circle around the axis,
+/// the profile's rational cubic pieces along it (basic patches (2,3), (4,3) after eq. (12)).
+/// Throws InputError for angles g1Circle refuses (an arc of pi or more) or a bad profile.
+G1RevolvedShape g1Revolution(const ShapeFrame& frame, const Eigen::VectorXd& angles, const Homogeneous3& cubic,
+                             const Eigen::VectorXd& knots);
 
 /// Section 5 for basic shape to basic shape (the C1 counterpart of joinShapes): the end of
 /// a's profile joined to the start of b's by a (4,2) double strip; both circles converted by

@@ -105,6 +105,65 @@ G2Surface cone(const ShapeFrame& frame, double radius0, double slope, const Eige
 G2Surface torus(const ShapeFrame& frame, double R, double r, const Eigen::VectorXd& anglesU,
                 const Eigen::VectorXd& anglesV);
 
+/// The profile of a surface of revolution of any designed curve (issue 32): a rational cubic
+/// spline (a B-spline of degree <= 3, rational or not: a design spline, a conic arc, a
+/// quadratic spline raised to cubic) in a half-plane bounded by the axis.
+struct RevolutionProfile {
+  /// origin on the axis, z the axis, x the direction of the profile's half-plane (angle 0)
+  ShapeFrame frame;
+  /// 4 homogeneous Bézier rows per piece, (w rho, w zeta, w): distance from the axis and
+  /// height; the B-spline's own weights, so that its joins keep their homogeneous continuity
+  Homogeneous3 cubic;
+  Eigen::VectorXd knots;  ///< pieces + 1 increasing parameters (the curve's distinct knots)
+  int pieces() const { return static_cast<int>(cubic.rows() / 4); }
+};
+
+/// The profile of a curve about the axis through `origin` along `axis`: raised to degree 3,
+/// the parameters `splits` (inside its range) inserted as knots, split into its Bézier
+/// pieces exactly (knot insertion). Throws InputError naming the
+/// problem for a curve OCCT would refuse (poles, weights or knots not finite, ...), a degree
+/// above 3, a periodic (closed) curve, an axis that is not a finite non-zero direction, a
+/// curve not in one plane through the axis (naming the pole off it), a curve that touches
+/// or crosses the axis (naming where), or a split outside the curve's range.
+RevolutionProfile revolutionProfile(const BSplineCurve& curve, const Eigen::Vector3d& origin,
+                                    const Eigen::Vector3d& axis, const Eigen::VectorXd& splits = {});
+
+/// The profile revolved about its frame's z (eq. (2) around the axis, the profile's pieces
+/// along it): patches exactly on the surface of revolution. Profile scalars beta_j = the knot
+/// ratios h_j / h_{j-1}, gamma_j = 0 (exact at the profile's homogeneous C2 joins).
+/// Throws InputError for angles g2Circle refuses, or as revolveG2.
+G2Surface revolution(const RevolutionProfile& profile, const Eigen::VectorXd& angles);
+
+/// Dupin ring cyclide (the paper's "generalized tori", Section 2) in the frame's coordinates:
+///   x = (mu (c - a cos u cos v) + b^2 cos u) / D, y = b sin u (a - mu cos v) / D,
+///   z = b sin v (c cos u - mu) / D, D = a - c cos u cos v, b^2 = a^2 - c^2,
+/// implicitly (x^2 + y^2 + z^2 - mu^2 + b^2)^2 = 4 (a x - c mu)^2 + 4 b^2 y^2 (c = 0: the
+/// torus of radii a and mu about the frame's z). Both families of curvature lines (u and v
+/// constant) are circles; bilinear in the two circles' homogeneous points, so patch (I, J)
+/// is the exact bicubic of the eq. (2) pieces of anglesU[I..I+1] and anglesV[J..J+1]. Seam
+/// scalars: the circles' beta (exact after the linear map); gamma: the circles' (the
+/// cyclide's projected gamma differ). Throws InputError for parameters that are not finite,
+/// a > c >= 0 failing (no real surface), mu outside (c, a) (singular: spindle or horn
+/// cyclide), a control weight that is not positive (arcs too wide for c / a near 1), or the
+/// angle checks of g2Circle.
+G2Surface dupinCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                       const Eigen::VectorXd& anglesV);
+
+/// The homogeneous rows (w p, w) under the affine map p -> A p + t: (A (w p) + w t, w). Every
+/// construction of the blends is linear in homogeneous coordinates, so it commutes with this
+/// map (docs/BLENDING.md): the image of a sphere zone is an ellipsoid zone, exactly.
+/// Throws InputError for a map that is not finite or not invertible.
+Homogeneous4 affineImage(const Homogeneous4& rows, const Eigen::Matrix3d& A, const Eigen::Vector3d& t);
+
+/// The homogeneous rows under the projective map (w p, w) -> M (w p, w) (a linear map of
+/// homogeneous space, so the blends commute with it as with affine maps). The paper's
+/// recipe of Section 2 in one line: the hyperbolic cylinder x^2/a^2 - y^2/b^2 = 1 is
+/// (a, b sin t | cos t) = M (cos t, sin t | 1) times the heights, i.e. the image of a
+/// circular cylinder's partial turn (|t| < pi/2) under (X, Y, Z, W) -> (a W, b Y, Z, X).
+/// Throws InputError for a map that is not finite or not invertible, or a row whose weight
+/// becomes <= 0 (the row's point would go to infinity or beyond), naming the row.
+Homogeneous4 projectiveImage(const Homogeneous4& rows, const Eigen::Matrix4d& M);
+
 /// Patch (I, J) as an exact rational Bézier Geom_BSplineSurface over [0,1]^2.
 Handle(Geom_BSplineSurface) patchToOcct(const G2Surface& surface, int I, int J);
 

@@ -139,14 +139,36 @@ BlendComplex blendSphereZoneNaive(const ShapeFrame& frame, double radius, const 
 /// A basic shape of revolution, described for the shape-to-shape join: kind, frame (z the
 /// axis), its two size parameters and its angle lists (radians; heights for cylinder/cone).
 struct ShapeOfRevolution {
-  enum class Kind { SphereZone, Cone, Torus };  ///< a cylinder is a cone with slope 0
+  /// a cylinder is a cone with slope 0; Revolution: any rational cubic profile (issue 32)
+  enum class Kind { SphereZone, Cone, Torus, Revolution };
   Kind kind = Kind::SphereZone;
   ShapeFrame frame;
   double size0 = 1.0;       ///< sphere: radius; cone: radius0 (at height 0); torus: major radius R
   double size1 = 0.0;       ///< sphere: unused; cone: slope; torus: minor radius r
   Eigen::VectorXd around;   ///< angles around the axis (a full turn)
-  Eigen::VectorXd profile;  ///< latitudes, heights or tube angles
+  Eigen::VectorXd profile;  ///< latitudes, heights or tube angles; Revolution: the curve's knots
+  Homogeneous3 curve;       ///< Revolution: RevolutionProfile::cubic (frame: RevolutionProfile::frame)
+  /// A Revolution of `p` over the angles `around`. Throws nothing (the blends check it).
+  static ShapeOfRevolution of(const RevolutionProfile& p, const Eigen::VectorXd& around);
 };
+
+/// Section 4.2 for a Dupin ring cyclide (dupinCyclide; anglesU a full turn, anglesV an open
+/// range): both circles converted to C2 sextics (Section 4.1; the cyclide is bilinear in their
+/// homogeneous points, so it stays exact and the basic rows are C2 in homogeneous space), the
+/// default ring in the same tensor form (the revolution's default ring on the unit circles,
+/// mapped by the cyclide's bilinear form: rational), one (6,5) strip at the last v angle.
+/// Throws InputError as dupinCyclide, for a partial turn, or a ring weight that is not positive.
+BlendComplex blendCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                          const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho);
+
+/// Section 4.2 for any shape of revolution (a Revolution's profile included): as blendCone,
+/// the interface at the end or start of its profile. A profile join that is only G2 (not C2
+/// in homogeneous space, e.g. a double knot) is made C2 by eq. (11) in the sextic rows
+/// (docs/BLENDING.md). naive: the Fig. 2a baseline. Throws InputError as the shape's checks,
+/// for an interface on the axis, or a ring that does not match.
+BlendComplex blendShape(const ShapeOfRevolution& shape, CircleReparam method = CircleReparam::Rho,
+                        Handle(Geom_BSplineSurface) ring = nullptr, bool sexticInV = true, bool naive = false,
+                        Interface at = Interface::End);
 
 /// Basic shape to basic shape (Figs. 9, 11, 12): the end of a's profile joined to the start
 /// of b's by one (6,5) transition row, both kept exact. Both angle lists around the axes need
