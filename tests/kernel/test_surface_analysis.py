@@ -200,3 +200,204 @@ def test_bad_faces_raise_input_error():
         fw.surface_curvature(3.0, [[0.5, 0.5]])
     with pytest.raises(fw.InputError, match="null"):
         fw.surface_curvature(Part.Shape(), [[0.5, 0.5]])
+
+
+# ---- continuity across edges
+
+def _face_of(shape, name):
+    return shape.Faces[int(name[4:]) - 1]
+
+
+def _shared(shape):
+    records = [r for r in fw.edge_continuity(shape) if r.kind == "shared"]
+    assert len(records) == 1
+    return records[0]
+
+
+def _pair(faces):
+    shell = Part.makeShell(faces)
+    shell.sewShape()
+    assert len(shell.Faces) == 2
+    return shell
+
+
+def _surface(poles, u_knots, u_mults, v_knots, v_mults):
+    s = Part.BSplineSurface()
+    s.buildFromPolesMultsKnots(poles, u_mults, v_mults, u_knots, v_knots, False, False, 3, 3)
+    return s
+
+
+def _split_pair(u_mults):
+    """A bicubic surface with an inner u-knot of multiplicity u_mults[1] (1: C2, 2: C1 only),
+    cut into two faces there."""
+    nu = sum(u_mults) - 4
+    poles = [[V(i, j, 0.4 * math.sin(1.3 * i + 0.7 * j) + 0.05 * i * i * (j - 1.5)) for j in range(4)]
+             for i in range(nu)]
+    s = _surface(poles, [0, 0.5, 1], u_mults, [0, 1], [4, 4])
+    halves = []
+    for a, b in [(0, 0.5), (0.5, 1)]:
+        h = s.copy()
+        h.segment(a, b, 0, 1)
+        halves.append(Part.Face(h))
+    return _pair(halves)
+
+
+def _referee_cross_jump(shape, record, n=101):
+    """The largest jump of the normal curvature across the edge (n x T), from getDN, over the
+    largest normal curvature (three directions) along it: the referee of curvature_jump."""
+    edge = shape.Edges[int(record.edge[4:]) - 1]
+    fa, fb = (_face_of(shape, name) for name in record.faces)
+    jumps, scale = [], 0.0
+    for t in np.linspace(edge.FirstParameter, edge.LastParameter, n)[1:-1]:
+        p, tangent = edge.valueAt(t), edge.tangentAt(t)
+        ka, kb = [], []
+        for face, out in [(fa, ka), (fb, kb)]:
+            u, v = face.Surface.parameter(p)
+            n_ = face.normalAt(u, v)
+            across = n_.cross(tangent) if face is fa else fa.normalAt(*fa.Surface.parameter(p)).cross(tangent)
+            for d in (tangent, across):
+                out.append(_referee_normal_curvature(face, u, v, d))
+        jumps.append(abs(ka[1] - kb[1]))
+        scale = max(scale, *map(abs, ka + kb))
+    return max(jumps) / scale
+
+
+def test_filleted_box_fillet_edges_are_g1_and_sharp_edges_g0_at_90_degrees():
+    box = Part.makeBox(10, 10, 10)
+    solid = box.makeFillet(2, [box.Edges[0], box.Edges[5]])
+    records = fw.edge_continuity(solid)
+    assert [r.edge for r in records] == [f"Edge{i + 1}" for i in range(len(solid.Edges))]
+    seen = set()
+    for r in records:
+        edge = solid.Edges[int(r.edge[4:]) - 1]
+        faces = [_face_of(solid, name) for name in r.faces]
+        assert r.kind == "shared" and len(faces) == 2
+        assert all(edge.isSame(e) for e in [edge]) and all(any(edge.isSame(e) for e in f.Edges) for f in faces)
+        # Referee: the normals of both faces at the edge's middle (Part's normalAt).
+        p = edge.valueAt(0.5 * (edge.FirstParameter + edge.LastParameter))
+        na, nb = (f.normalAt(*f.Surface.parameter(p)) for f in faces)
+        angle = math.degrees(na.getAngle(nb))
+        fillet = any(isinstance(f.Surface, Part.Cylinder) for f in faces)
+        if fillet and isinstance(edge.Curve, Part.Line):  # fillet to wall: tangent, curvature jumps
+            assert angle < 1e-6
+            assert r.continuity == "G1", r
+            assert r.angle < 1e-6 and r.curvature_jump == pytest.approx(1.0, rel=1e-9)
+            seen.add("G1")
+        else:
+            assert angle == pytest.approx(90.0, abs=1e-6)
+            assert r.continuity == "G0", r
+            assert r.angle == pytest.approx(90.0, abs=1e-9)
+            seen.add("G0")
+        assert r.gap < 1e-9
+    assert seen == {"G0", "G1"}
+
+
+def test_c1_but_not_c2_faces_are_g1():
+    shell = _split_pair([4, 2, 4])
+    r = _shared(shell)
+    referee = _referee_cross_jump(shell, r)
+    assert referee > 0.05  # the pair really is not G2
+    assert r.continuity == "G1" and r.angle < 1e-6
+    assert r.curvature_jump >= referee * (1 - 1e-9)
+
+
+def test_curvature_matched_pair_split_at_a_knot_is_g2():
+    shell = _split_pair([4, 1, 4])
+    r = _shared(shell)
+    assert _referee_cross_jump(shell, r) < 1e-9
+    assert r.continuity == "G2" and r.curvature_jump < 1e-9 and r.angle < 1e-9
+
+
+def test_planted_kink_of_half_a_degree_is_g0_with_its_angle():
+    a = math.radians(0.5)
+    left = Part.Face(Part.makePolygon([V(-1, 0, 0), V(0, 0, 0), V(0, 1, 0), V(-1, 1, 0), V(-1, 0, 0)]))
+    right = Part.Face(Part.makePolygon([V(0, 0, 0), V(math.cos(a), 0, math.sin(a)), V(math.cos(a), 1, math.sin(a)),
+                                        V(0, 1, 0), V(0, 0, 0)]))
+    r = _shared(_pair([left, right]))
+    assert r.continuity == "G0"
+    assert r.angle == pytest.approx(0.5, abs=1e-3)
+
+
+def _defect_pair():
+    """Two bicubic faces sharing the edge x = 0; the right one's cross tangent turns only for
+    v in [0.52, 0.56] (one pole moved), between the 17 samples a uniform sampling would take."""
+    v_knots, v_mults = [0, 0.25, 0.52, 0.53, 0.54, 0.55, 0.56, 0.75, 1], [4, 1, 1, 1, 1, 1, 1, 1, 4]
+    nv = sum(v_mults) - 4
+    ys = [sum(v_knots_flat[j + 1:j + 4]) / 3 for v_knots_flat in [_flat(v_knots, v_mults)] for j in range(nv)]
+    left = [[V(-1 + i / 3, y, 0) for y in ys] for i in range(4)]
+    right = [[V(i / 3, y, 0) for y in ys] for i in range(4)]
+    bump = next(j for j in range(nv) if _flat(v_knots, v_mults)[j] >= 0.52)
+    right[1][bump] = V(1 / 3, ys[bump], 0.02)
+    faces = [Part.Face(_surface(p, [0, 1], [4, 4], v_knots, v_mults)) for p in (left, right)]
+    return _pair(faces)
+
+
+def _flat(knots, mults):
+    return [k for k, m in zip(knots, mults) for _ in range(m)]
+
+
+def test_a_defect_between_uniform_samples_is_found():
+    shell = _defect_pair()
+    r = _shared(shell)
+    fa, fb = (_face_of(shell, name) for name in r.faces)
+    edge = shell.Edges[int(r.edge[4:]) - 1]
+
+    def angle_at(t):
+        p = edge.valueAt(t)
+        return math.degrees(fa.normalAt(*fa.Surface.parameter(p)).getAngle(fb.normalAt(*fb.Surface.parameter(p))))
+
+    t0, t1 = edge.FirstParameter, edge.LastParameter
+    dense = max(angle_at(t) for t in np.linspace(t0, t1, 4001))
+    uniform = max(angle_at(t) for t in np.linspace(t0, t1, 17))
+    assert dense > 1.0 and uniform < 0.1 * dense  # the defect hides between uniform samples
+    assert r.continuity == "G0"
+    assert r.angle == pytest.approx(dense, rel=1e-5)
+    assert 0.52 < r.angle_point.y < 0.56
+
+
+def test_our_c2_blend_is_g2_across_every_interior_edge():
+    zone = fw.shapes.SphereZone((0, 0, 0), 2.0, [0.0, 1.5, 3.0, 2 * math.pi], [-0.5, 0.2, 0.7])
+    shell = fw.blend_basic_shape(zone).shell
+    records = fw.edge_continuity(shell)
+    interior = [r for r in records if r.kind in ("shared", "seam")]
+    assert len(interior) > 10
+    for r in interior:
+        assert r.continuity == "G2", r
+    assert {r.kind for r in records} <= {"shared", "seam", "boundary"}
+    assert any(r.kind == "boundary" for r in records)
+
+
+def test_faces_oriented_against_each_other_are_compared_the_right_way_round():
+    shell = _split_pair([4, 1, 4])
+    a, b = shell.Faces
+    b.reverse()  # this face only, still sharing the edge (Part.Shell would turn it back)
+    flipped = Part.Compound([a, b])
+    assert [f.Orientation for f in flipped.Faces] == ["Forward", "Reversed"]
+    r = _shared(flipped)
+    assert r.continuity == "G2" and r.angle < 1e-9 and r.curvature_jump < 1e-9
+
+
+def test_cylinder_seam_is_compared_with_itself_and_box_edges_have_two_faces():
+    records = fw.edge_continuity(Part.makeCylinder(1.0, 2.0))
+    seams = [r for r in records if r.kind == "seam"]
+    assert len(seams) == 1 and seams[0].continuity == "G2" and len(seams[0].faces) == 1
+    assert [r.continuity for r in records if r.kind == "shared"] == ["G0", "G0"]
+    open_face = fw.edge_continuity(Part.makePlane(1, 1))
+    assert {r.continuity for r in open_face} == {"boundary"}
+
+
+def test_tolerances_decide_the_verdict_and_bad_ones_are_refused():
+    shell = _split_pair([4, 2, 4])
+    r = _shared(shell)
+    assert fw.edge_continuity(shell, curvature_tolerance=2 * r.curvature_jump)[0].continuity in ("G2", "boundary")
+    assert _shared_of(fw.edge_continuity(shell, curvature_tolerance=2 * r.curvature_jump)).continuity == "G2"
+    assert _shared_of(fw.edge_continuity(shell, gap_tolerance=0, angle_tolerance=0)).continuity in ("gap", "G0")
+    for bad in [dict(angle_tolerance=-1), dict(samples=0), dict(gap_tolerance=math.nan), dict(samples="x")]:
+        with pytest.raises(fw.InputError):
+            fw.edge_continuity(shell, **bad)
+    with pytest.raises(fw.InputError, match="no edges"):
+        fw.edge_continuity(Part.Vertex(0, 0, 0))
+
+
+def _shared_of(records):
+    return next(r for r in records if r.kind == "shared")
