@@ -401,3 +401,71 @@ def test_tolerances_decide_the_verdict_and_bad_ones_are_refused():
 
 def _shared_of(records):
     return next(r for r in records if r.kind == "shared")
+
+
+# ---- the curvature map
+
+def _outward(m):
+    """> 0 for a triangle counter-clockwise seen from the side away from the origin."""
+    a, b, c = (m.points[m.triangles[:, i]] for i in range(3))
+    return np.einsum("ij,ij->i", np.cross(b - a, c - a), a + b + c)
+
+
+def _edge_jumps(m):
+    values = m.values[m.triangles]
+    return np.abs(values - np.roll(values, 1, axis=1)).max()
+
+
+def test_curvature_map_of_a_sphere_is_exact_and_faces_outward():
+    m = fw.curvature_map(Part.makeSphere(2.0), "mean")
+    assert np.allclose(m.values, 0.5, rtol=1e-9)
+    assert np.allclose(np.linalg.norm(m.points, axis=1), 2.0, rtol=1e-9)
+    outward = _outward(m)
+    assert outward.min() > -1e-12 and (outward > 0).mean() > 0.95
+    reversed_sphere = _reversed(Part.makeSphere(2.0).Faces[0])
+    assert np.allclose(fw.curvature_map(reversed_sphere, "max").values, -0.5, rtol=1e-9)
+
+
+def test_curvature_map_values_are_exact_and_refined_where_they_change_fast():
+    R, r = 4.0, 1.25
+    torus = Part.makeTorus(R, r)
+    coarse = fw.curvature_map(torus, "gaussian", levels=0)
+    fine = fw.curvature_map(torus, "gaussian", fraction=0.05, levels=3)
+    rho = np.hypot(fine.points[:, 0], fine.points[:, 1])
+    cos_v = (rho - R) / r
+    assert np.allclose(fine.values, cos_v / (r * (R + r * cos_v)), atol=1e-9)
+    lo, hi = fine.values.min(), fine.values.max()
+    assert lo == pytest.approx(-1 / (r * (R - r)), rel=1e-3) and hi == pytest.approx(1 / (r * (R + r)), rel=1e-3)
+    assert len(fine.triangles) > len(coarse.triangles)
+    a, b, c = (fine.points[fine.triangles[:, i]] for i in range(3))
+    g = (a + b + c) / 3
+    centre = np.c_[g[:, :2] * (R / np.hypot(g[:, 0], g[:, 1]))[:, None], np.zeros(len(g))]  # the tube's axis
+    assert (np.einsum("ij,ij->i", np.cross(b - a, c - a), g - centre) > 0).all()  # split triangles face outward
+    assert _edge_jumps(coarse) > 0.05 * (hi - lo) >= _edge_jumps(fine)
+    assert fine.face_ranges.tolist() == [[fine.values.min(), fine.values.max()]] and set(fine.face) == {1}
+
+
+def test_curvature_map_radius_on_a_filleted_box_and_a_cone_apex_is_finite():
+    box = Part.makeBox(10, 10, 10)
+    solid = box.makeFillet(0.5, box.Edges[:4])
+    m = fw.curvature_map(solid, "radius")
+    size = solid.BoundBox.DiagonalLength  # the cap of flat faces is 1000 times the size, to OCCT's box margin
+    for i, face in enumerate(solid.Faces):
+        if isinstance(face.Surface, Part.Cylinder):
+            assert m.face_ranges[i] == pytest.approx([0.5, 0.5], rel=1e-9)
+        elif isinstance(face.Surface, Part.Plane):
+            assert m.face_ranges[i] == pytest.approx([1e3 * size, 1e3 * size], rel=1e-6)
+    cone = fw.curvature_map(Part.makeCone(2.0, 0.0, 3.0), "max_abs")
+    assert np.isfinite(cone.values).all() and cone.values.max() < 1e3
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(quantity="curvy"), "quantity"),
+    (dict(deflection=-1.0), "deflection"),
+    (dict(deflection=1e-12), "deflection"),
+    (dict(levels=9), "levels"),
+    (dict(fraction=2.0), "fraction"),
+])
+def test_curvature_map_bad_arguments_raise_input_error(kwargs, message):
+    with pytest.raises(fw.InputError, match=message):
+        fw.curvature_map(Part.makeSphere(1.0), **kwargs)

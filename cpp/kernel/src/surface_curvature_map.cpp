@@ -45,6 +45,7 @@ constexpr Eigen::Index kMaxTriangles = 4'000'000;  // bounds the refinement's wo
 struct FaceMesh {
   std::vector<double> u, v, value;
   std::vector<gp_Pnt> p;
+  std::vector<char> singular;  ///< no curvature there (a cone's apex): the value is its neighbours' mean
   std::vector<std::array<int, 3>> triangles;
 };
 
@@ -68,25 +69,45 @@ double quantityOf(MapQuantity q, const detail::Principal& k, double flatRadius) 
   return 0.0;
 }
 
-/// The quantity at (u, v); a singular point takes the value just inside the face, and a
-/// surface that cannot be evaluated there gives 0 (the point keeps the mesh's position).
+/// The quantity at (u, v); a singular point (a cone's apex, or where the surface cannot be
+/// evaluated) is marked, and smoothSingular gives it its neighbours' mean.
 void addVertex(FaceMesh& mesh, const detail::FaceSurface& surface, MapQuantity q, double flatRadius, double u, double v,
                const gp_Pnt* meshPoint) {
   detail::SurfaceFrame f;
   detail::Principal k;
   double value = 0.0;
   gp_Pnt p = meshPoint ? *meshPoint : gp_Pnt();
+  bool defined = false;
   try {
-    surface.curvature(u, v, f, k);
+    defined = surface.curvature(u, v, f, k);
     value = quantityOf(q, k, flatRadius);
     if (!meshPoint) p = f.p;
   } catch (const Standard_Failure&) {
+    defined = false;
   }
-  if (!std::isfinite(value)) value = 0.0;
+  if (!std::isfinite(value)) defined = false;
+  if (!defined) value = 0.0;
+  mesh.singular.push_back(!defined);
   mesh.u.push_back(u);
   mesh.v.push_back(v);
   mesh.p.push_back(p);
   mesh.value.push_back(value);
+}
+
+/// Singular vertices take the mean of their regular neighbours' values (0 without any).
+void smoothSingular(FaceMesh& mesh) {
+  std::vector<double> sum(mesh.value.size(), 0.0);
+  std::vector<int> count(mesh.value.size(), 0);
+  for (const auto& t : mesh.triangles) {
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        if (mesh.singular[t[a]] && !mesh.singular[t[b]]) sum[t[a]] += mesh.value[t[b]], ++count[t[a]];
+      }
+    }
+  }
+  for (std::size_t i = 0; i < sum.size(); ++i) {
+    if (mesh.singular[i]) mesh.value[i] = count[i] > 0 ? sum[i] / count[i] : 0.0;
+  }
 }
 
 /// One pass of red-green refinement: edges whose values differ by more than `threshold`
@@ -144,6 +165,7 @@ bool refinePass(FaceMesh& mesh, const detail::FaceSurface& surface, MapQuantity 
     }
   }
   mesh.triangles.swap(next);
+  smoothSingular(mesh);
   return true;
 }
 
@@ -196,10 +218,11 @@ CurvatureMap curvatureMap(const TopoDS_Shape& shape, MapQuantity quantity, doubl
       m.triangles.push_back(reversed ? std::array<int, 3>{a - 1, c - 1, b - 1}
                                      : std::array<int, 3>{a - 1, b - 1, c - 1});
     }
+    smoothSingular(m);
     for (double x : m.value) lo = std::min(lo, x), hi = std::max(hi, x);
   }
-  // Refinement against the range over the whole shape.
-  if (hi > lo) {
+  // Refinement against the range over the whole shape (not a range of rounding errors).
+  if (hi - lo > 1e-9 * std::max(std::abs(hi), std::abs(lo))) {
     const double threshold = fraction * (hi - lo);
     for (int level = 0; level < levels; ++level) {
       Eigen::Index total = 0;

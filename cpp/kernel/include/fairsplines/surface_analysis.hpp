@@ -100,7 +100,7 @@ struct CurvatureMap {
 /// face's triangles split where the quantity changes by more than `fraction` of its range
 /// over the shape (at most `levels` times, within a bound on the triangle count).
 /// "radius" is 1 / max(|k1|, |k2|), capped at 1e3 x the shape's size where flat. A vertex at
-/// a singular point (a cone's apex) takes the value just inside the face.
+/// a singular point (a cone's apex: no curvature there) takes the mean of its neighbours.
 /// Throws InputError if the shape is null or has no faces, if the deflection is below 1e-6 of
 /// the shape's size, or if the mesh fails.
 CurvatureMap curvatureMap(const TopoDS_Shape& shape, MapQuantity quantity, double deflection = 0.0,
