@@ -41,8 +41,12 @@ void bindSurfaceAnalysis(py::module_& m) {
   m.def(
       "surface_curvature",
       [](const std::string& brep, const Eigen::Ref<const Eigen::MatrixXd>& uv) {
-        const SurfaceCurvature c = surfaceCurvature(singleFace(readBrepShape(brep)), uv);
-        return py::make_tuple(c.k1, c.k2, c.gaussian, c.mean, c.dir1, c.dir2, c.normal, c.points, c.state);
+        SurfaceCurvature c = surfaceCurvature(singleFace(readBrepShape(brep)), uv);
+        // Moved into numpy (pybind11 keeps the moved matrix alive): no copy of the results.
+        return py::make_tuple(py::cast(std::move(c.k1)), py::cast(std::move(c.k2)), py::cast(std::move(c.gaussian)),
+                              py::cast(std::move(c.mean)), py::cast(std::move(c.dir1)), py::cast(std::move(c.dir2)),
+                              py::cast(std::move(c.normal)), py::cast(std::move(c.points)),
+                              py::cast(std::move(c.state)));
       },
       "brep"_a, "uv"_a,
       "(k1, k2, gaussian, mean, dir1, dir2, normal, points, state) at the rows (u, v) of uv on the one face of the "

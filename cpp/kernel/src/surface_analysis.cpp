@@ -4,13 +4,18 @@
 // OCCT evaluates the surface (BRepAdaptor_Surface::D2, the face's location applied).
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 #include <sstream>
+#include <vector>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
@@ -73,6 +78,26 @@ bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   f.M = -suv.Dot(f.n);
   f.N = -svv.Dot(f.n);
   return true;
+}
+
+std::vector<Eigen::Index> FaceSurface::evaluationOrder(const Eigen::Ref<const Eigen::MatrixXd>& uv) const {
+  std::vector<Eigen::Index> order(uv.rows());
+  std::iota(order.begin(), order.end(), Eigen::Index{0});
+  if (surface_.GetType() != GeomAbs_BSplineSurface || uv.rows() < 64) return order;
+  const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(surface_.Face()));
+  if (b.IsNull()) return order;
+  std::vector<double> uKnots, vKnots;
+  for (int i = 1; i <= b->NbUKnots(); ++i) uKnots.push_back(b->UKnot(i));
+  for (int i = 1; i <= b->NbVKnots(); ++i) vKnots.push_back(b->VKnot(i));
+  std::vector<std::int64_t> key(uv.rows());
+  const auto nv = static_cast<std::int64_t>(vKnots.size()) + 1;
+  for (Eigen::Index i = 0; i < uv.rows(); ++i) {
+    const auto su = std::upper_bound(uKnots.begin(), uKnots.end(), uv(i, 0)) - uKnots.begin();
+    const auto sv = std::upper_bound(vKnots.begin(), vKnots.end(), uv(i, 1)) - vKnots.begin();
+    key[i] = su * nv + sv;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return key[a] < key[b]; });
+  return order;
 }
 
 namespace {
@@ -189,6 +214,15 @@ SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<cons
   const detail::FaceSurface surface(face);
   const double wu = surface.u1 - surface.u0, wv = surface.v1 - surface.v0;
   if (!(std::isfinite(wu) && std::isfinite(wv))) throw InputError("the face is unbounded: trim it first");
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double u = uv(i, 0), v = uv(i, 1);
+    if (u < surface.u0 - 0.1 * wu || u > surface.u1 + 0.1 * wu || v < surface.v0 - 0.1 * wv ||
+        v > surface.v1 + 0.1 * wv) {
+      throw InputError(pointName(i, u, v) + " is outside the face's parameter range u in [" + exactNumber(surface.u0) +
+                       ", " + exactNumber(surface.u1) + "], v in [" + exactNumber(surface.v0) + ", " +
+                       exactNumber(surface.v1) + "] by more than 10%");
+    }
+  }
   SurfaceCurvature out;
   out.k1.resize(n);
   out.k2.resize(n);
@@ -201,14 +235,8 @@ SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<cons
   out.state.resize(n);
   detail::SurfaceFrame f;
   detail::Principal k;
-  for (Eigen::Index i = 0; i < n; ++i) {
+  for (const Eigen::Index i : surface.evaluationOrder(uv)) {
     const double u = uv(i, 0), v = uv(i, 1);
-    if (u < surface.u0 - 0.1 * wu || u > surface.u1 + 0.1 * wu || v < surface.v0 - 0.1 * wv ||
-        v > surface.v1 + 0.1 * wv) {
-      throw InputError(pointName(i, u, v) + " is outside the face's parameter range u in [" + exactNumber(surface.u0) +
-                       ", " + exactNumber(surface.u1) + "], v in [" + exactNumber(surface.v0) + ", " +
-                       exactNumber(surface.v1) + "] by more than 10%");
-    }
     bool defined = false;
     try {
       defined = surface.curvature(u, v, f, k);

@@ -30,6 +30,9 @@ enum class PointState : int {
   Degenerate = 2,  ///< Su x Sv vanishes (a sphere's pole): the limit from inside the face
 };
 
+/// n x 3 rows (row-major: numpy's layout).
+using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
 /// Principal curvatures at n points of one face, in the face's sign convention.
 struct SurfaceCurvature {
   Eigen::VectorXd k1, k2;       ///< principal curvatures, k1 >= k2
