@@ -61,11 +61,20 @@ FaceSurface::FaceSurface(const TopoDS_Face& face) : surface_(face, false) {
   // here II is measured against the face normal n = sign (Su x Sv) (Face.normalAt's) with
   // the opposite sign, L = -Suu.n, so convex as seen from n is positive.
   sign = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+  if (surface_.GetType() == GeomAbs_BSplineSurface) {
+    const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    if (!b.IsNull() && b->NbUKnots() * b->NbVKnots() > 4) {
+      face_ = face;
+      for (int i = 1; i <= b->NbUKnots(); ++i) uKnots_.push_back(b->UKnot(i));
+      for (int i = 1; i <= b->NbVKnots(); ++i) vKnots_.push_back(b->VKnot(i));
+      slots_.resize(std::min(kSpanSlots, (uKnots_.size() + 1) * (vKnots_.size() + 1)));
+    }
+  }
 }
 
 bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   gp_Vec suu, svv, suv;
-  surface_.D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
+  adaptor(u, v).D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
   f.E = f.su.Dot(f.su);
   f.F = f.su.Dot(f.sv);
   f.G = f.sv.Dot(f.sv);
@@ -80,24 +89,13 @@ bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   return true;
 }
 
-std::vector<Eigen::Index> FaceSurface::evaluationOrder(const Eigen::Ref<const Eigen::MatrixXd>& uv) const {
-  std::vector<Eigen::Index> order(uv.rows());
-  std::iota(order.begin(), order.end(), Eigen::Index{0});
-  if (surface_.GetType() != GeomAbs_BSplineSurface || uv.rows() < 64) return order;
-  const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(surface_.Face()));
-  if (b.IsNull()) return order;
-  std::vector<double> uKnots, vKnots;
-  for (int i = 1; i <= b->NbUKnots(); ++i) uKnots.push_back(b->UKnot(i));
-  for (int i = 1; i <= b->NbVKnots(); ++i) vKnots.push_back(b->VKnot(i));
-  std::vector<std::int64_t> key(uv.rows());
-  const auto nv = static_cast<std::int64_t>(vKnots.size()) + 1;
-  for (Eigen::Index i = 0; i < uv.rows(); ++i) {
-    const auto su = std::upper_bound(uKnots.begin(), uKnots.end(), uv(i, 0)) - uKnots.begin();
-    const auto sv = std::upper_bound(vKnots.begin(), vKnots.end(), uv(i, 1)) - vKnots.begin();
-    key[i] = su * nv + sv;
-  }
-  std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) { return key[a] < key[b]; });
-  return order;
+const BRepAdaptor_Surface& FaceSurface::adaptor(double u, double v) const {
+  if (slots_.empty()) return surface_;
+  const std::size_t su = std::upper_bound(uKnots_.begin(), uKnots_.end(), u) - uKnots_.begin();
+  const std::size_t sv = std::upper_bound(vKnots_.begin(), vKnots_.end(), v) - vKnots_.begin();
+  std::unique_ptr<BRepAdaptor_Surface>& slot = slots_[(su * (vKnots_.size() + 1) + sv) % slots_.size()];
+  if (!slot) slot = std::make_unique<BRepAdaptor_Surface>(face_, false);
+  return *slot;
 }
 
 namespace {
@@ -235,7 +233,7 @@ SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<cons
   out.state.resize(n);
   detail::SurfaceFrame f;
   detail::Principal k;
-  for (const Eigen::Index i : surface.evaluationOrder(uv)) {
+  for (Eigen::Index i = 0; i < n; ++i) {
     const double u = uv(i, 0), v = uv(i, 1);
     bool defined = false;
     try {

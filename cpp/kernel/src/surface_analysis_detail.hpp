@@ -6,6 +6,7 @@
 #include <TopoDS_Face.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
+#include <memory>
 #include <vector>
 
 #include "fairsplines/surface_analysis.hpp"
@@ -39,15 +40,19 @@ public:
   /// inside the face; false where that limit does not exist (curvature growing without
   /// bound towards the point: a cone's apex), with the values just inside the face.
   bool curvature(double u, double v, SurfaceFrame& f, Principal& k) const;
-  /// The order in which to evaluate the rows (u, v) of uv: grouped by knot span on a
-  /// B-spline surface, so that OCCT's span cache (BSplSLib_Cache) is rebuilt once a span
-  /// rather than once a point for scattered points; as given otherwise.
-  std::vector<Eigen::Index> evaluationOrder(const Eigen::Ref<const Eigen::MatrixXd>& uv) const;
   double u0, u1, v0, v1;  ///< the face's parameter bounds (BRepTools::UVBounds)
   double sign;            ///< +1 for a forward face, -1 for a reversed one
 
 private:
+  /// The adaptor that evaluates at (u, v): on a B-spline surface one per knot span (up to
+  /// kSpanSlots, shared beyond), each keeping OCCT's span cache (BSplSLib_Cache) of its own,
+  /// so that scattered points do not rebuild one cache at every point; surface_ otherwise.
+  const BRepAdaptor_Surface& adaptor(double u, double v) const;
+  static constexpr std::size_t kSpanSlots = 256;
   BRepAdaptor_Surface surface_;
+  TopoDS_Face face_;
+  std::vector<double> uKnots_, vKnots_;
+  mutable std::vector<std::unique_ptr<BRepAdaptor_Surface>> slots_;
 };
 
 /// Principal curvatures from the fundamental forms (do Carmo, Differential Geometry of
