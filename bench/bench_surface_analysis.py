@@ -3,6 +3,8 @@
 - fw.surface_curvature on N points of a bicubic B-spline face (7 x 7 knot spans) against a
   Python loop over Face.curvatureAt at the same points; and the kernel alone (the call
   without the BRep hand-over of the face), in points per second;
+- fw.curvature_map of a torus against the Mesh workbench's curvature (Mesh.getCurvaturePerVertex)
+  on a meshing of the same face: time, and the error of each against the closed form;
 - fw.edge_continuity on a shape of about 500 edges (10 filleted boxes) and on a C2 blend
   shell of B-spline faces, in seconds per call.
 
@@ -58,6 +60,34 @@ def curvature(n):
     print(f"  Python loop over Face.curvatureAt {loop * 1e3:9.1f} ms   ratio {loop / whole:.0f}x")
 
 
+def mesh_baseline(deflection):
+    """The torus R = 4, r = 1.25: principal curvatures 1/r and cos(v)/(R + r cos(v)), with
+    cos(v) = (rho - R)/r at a point rho from the axis (convex positive, outward normals)."""
+    import Mesh
+
+    R, r = 4.0, 1.25
+    torus = Part.makeTorus(R, r)
+
+    def exact(points):
+        rho = np.hypot(points[:, 0], points[:, 1])
+        cos_v = (rho - R) / r
+        k = np.c_[np.full(len(points), 1 / r), cos_v / (R + r * cos_v)]
+        return np.sort(k, axis=1)[:, ::-1]
+
+    ours = best(lambda: fw.curvature_map(torus, "max", deflection=deflection, levels=0), 3, sample=0.2)
+    m = fw.curvature_map(torus, "max", deflection=deflection, levels=0)
+    our_error = np.abs(m.values - exact(m.points)[:, 0]).max()
+    mesh = Mesh.Mesh(torus.tessellate(deflection))
+    theirs = best(lambda: mesh.getCurvaturePerVertex(), 3, sample=0.2)
+    points = np.array([[p.x, p.y, p.z] for p in mesh.Points])
+    k = np.array([c[:2] for c in mesh.getCurvaturePerVertex()])
+    mesh_error = np.abs(np.sort(k, axis=1)[:, ::-1] - exact(points)).max(axis=0)
+    print(f"curvature of a torus (R 4, r 1.25), mesh deflection {deflection}:")
+    print(f"  fw.curvature_map ({len(m.points)} vertices) {ours * 1e3:.1f} ms, largest error of k1 {our_error:.1e} /mm")
+    print(f"  Mesh.getCurvaturePerVertex ({len(points)} vertices) {theirs * 1e3:.1f} ms (curvature only), largest "
+          f"error of k1 {mesh_error[0]:.2e}, of k2 {mesh_error[1]:.2e} /mm (k1 = 1/r = 0.8)")
+
+
 def filleted_boxes(count):
     box = Part.makeBox(10, 10, 10)
     one = box.makeFillet(1.5, box.Edges)
@@ -83,4 +113,5 @@ def continuity(count):
 if __name__ == "__main__":
     smoke = sys.argv[1:] == ["smoke"]
     curvature(2000 if smoke else 200000)
+    mesh_baseline(0.05 if smoke else 0.01)
     continuity(1 if smoke else 10)
