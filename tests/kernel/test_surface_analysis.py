@@ -173,6 +173,22 @@ def test_umbilics_and_poles_are_finite():
     assert np.allclose(np.cross(c.dir1[0], c.dir2[0]), c.normal[0])
 
 
+def test_umbilic_of_a_freeform_face_is_finite():
+    """The paraboloid z = x^2 + y^2 as a biquadratic Bezier patch: at its apex every direction
+    is principal, with curvature 2 (OCCT's Surface.curvature as the referee, sign applied)."""
+    a = [1.0, -1.0, 1.0]
+    poles = [[V(-1 + i, -1 + j, a[i] + a[j]) for j in range(3)] for i in range(3)]
+    s = Part.BSplineSurface()
+    s.buildFromPolesMultsKnots(poles, [3, 3], [3, 3], [0, 1], [0, 1], False, False, 2, 2)
+    face = Part.Face(s)
+    c = fw.surface_curvature(face, [[0.5, 0.5], [0.5 + 1e-9, 0.5]])
+    assert np.isfinite(np.c_[c.dir1, c.dir2, c.normal]).all() and c.umbilic[0]
+    occt = -face.Surface.curvature(0.5, 0.5, "Max")
+    assert abs(occt) == pytest.approx(2.0, rel=1e-12)
+    assert c.k1 == pytest.approx([occt] * 2, rel=1e-8) and c.k2 == pytest.approx([occt] * 2, rel=1e-8)
+    assert np.allclose(np.cross(c.dir1, c.dir2), c.normal, atol=1e-12)
+
+
 def test_a_cone_apex_is_refused_naming_the_point():
     face = next(f for f in Part.makeCone(2.0, 0.0, 3.0).Faces if isinstance(f.Surface, Part.Cone))
     u0, u1, v0, v1 = face.ParameterRange
