@@ -43,10 +43,11 @@ EdgeContinuity = namedtuple(
 EdgeContinuity.__module__ = "freecad_workbench"
 EdgeContinuity.__doc__ = (
     "The continuity of one edge: edge ('Edge3') and faces (['Face1', 'Face2'], one for a seam or a boundary) by "
-    "FreeCAD's names; kind 'shared', 'seam', 'boundary', 'degenerate' or 'non-manifold'; continuity 'gap', "
-    "'G0', 'G1', 'G2', 'boundary' or 'degenerate'; gap (largest distance between the sides and the edge), angle "
-    "(largest angle between the normals, degrees), curvature_jump (largest jump of normal curvature across the "
-    "edge and at 45 degrees to it, relative to curvature_scale, the largest normal curvature along the edge), "
+    "FreeCAD's names; kind 'shared', 'seam', 'boundary', 'free' (no face), 'degenerate' or 'non-manifold'; "
+    "continuity 'gap', 'G0', 'G1', 'G2', 'boundary', 'free' or 'degenerate'; gap (largest distance between the "
+    "sides and the edge), angle (largest angle between the normals, degrees), curvature_jump (largest jump of "
+    "normal curvature across the edge and at 45 degrees to it, relative to curvature_scale, the largest normal "
+    "curvature along the edge), "
     "curvature_jump_abs (1/length); the worst points (FreeCAD Vectors) and the edge's parameters there; samples: "
     "evaluations made."
 )

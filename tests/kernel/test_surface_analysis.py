@@ -400,6 +400,8 @@ def test_cylinder_seam_is_compared_with_itself_and_box_edges_have_two_faces():
     assert [r.continuity for r in records if r.kind == "shared"] == ["G0", "G0"]
     open_face = fw.edge_continuity(Part.makePlane(1, 1))
     assert {r.continuity for r in open_face} == {"boundary"}
+    loose = fw.edge_continuity(Part.Compound([Part.makePlane(1, 1), Part.makeLine(V(5, 0, 0), V(6, 0, 0))]))
+    assert [r.kind for r in loose].count("free") == 1 and loose[-1].faces == []
 
 
 def test_tolerances_decide_the_verdict_and_bad_ones_are_refused():

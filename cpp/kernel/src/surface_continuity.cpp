@@ -353,7 +353,7 @@ std::vector<EdgeContinuity> edgeContinuity(const TopoDS_Shape& shape, const Cont
       throw InputError("edge " + std::to_string(i) + " has no curve on its faces (" + e.GetMessageString() + ")");
     }
     if (pairs.empty()) {
-      record.kind = record.continuity = "boundary";
+      record.kind = record.continuity = around.empty() ? "free" : "boundary";
       out.push_back(record);
       continue;
     }
