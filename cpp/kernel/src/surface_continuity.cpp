@@ -34,6 +34,7 @@
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
+#include "finite.hpp"
 #include "surface_analysis_detail.hpp"
 
 namespace fairsplines {
@@ -358,6 +359,12 @@ std::vector<EdgeContinuity> edgeContinuity(const TopoDS_Shape& shape, const Cont
       continue;
     }
     for (const auto& pair : pairs) measurePair(*pair, options, minScale, record);
+    // The boundary rule (finite.hpp): no number that is not finite leaves the kernel.
+    if (!std::isfinite(record.gap) || !std::isfinite(record.angle) || !std::isfinite(record.curvatureJump) ||
+        !std::isfinite(record.curvatureScale) || firstNonFinite(record.gapPoint) >= 0) {
+      throw InputError("edge " + std::to_string(i) +
+                       ": its faces give values that are not finite (the geometry is beyond double precision)");
+    }
     const double gapTolerance =
         options.gapTolerance >= 0.0 ? options.gapTolerance : std::max(2.0 * BRep_Tool::Tolerance(edge), 1e-6 * size);
     record.continuity = record.gap > gapTolerance                           ? "gap"

@@ -23,6 +23,7 @@
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
+#include "finite.hpp"
 #include "surface_analysis_detail.hpp"
 
 namespace fairsplines {
@@ -269,6 +270,7 @@ CurvatureMap curvatureMap(const TopoDS_Shape& shape, MapQuantity quantity, doubl
     p0 += static_cast<Eigen::Index>(m.p.size());
     t0 += static_cast<Eigen::Index>(m.triangles.size());
   }
+  requireFinite(out.points, "the curvature map", "points");
   return out;
 }
 

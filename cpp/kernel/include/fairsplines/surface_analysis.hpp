@@ -81,7 +81,8 @@ struct EdgeContinuity {
 };
 
 /// One record per edge of the shape (TopExp::MapShapes order).
-/// Throws InputError if the shape is null, has no edges, or an option is negative or NaN.
+/// Throws InputError if the shape is null, has no edges, an option is negative or NaN, or an
+/// edge's faces give values that are not finite (naming the edge).
 std::vector<EdgeContinuity> edgeContinuity(const TopoDS_Shape& shape, const ContinuityOptions& options = {});
 
 /// What curvatureMap colours by.
