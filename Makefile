@@ -77,9 +77,11 @@ bench: build
 	$(BUILD)/bench/bench_monotone
 	$(BUILD)/bench/bench_fair_blend
 	$(BUILD)/bench/bench_fair_fit
+	$(BUILD)/bench/bench_surface_analysis
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py
+	$(PYTHON) bench/bench_surface_analysis.py
 
 # Every benchmark at its smallest size with few repeats (issue 26): only that each still runs
 # to its end, in under 2 minutes; the figures mean nothing. .ci/run runs it.
@@ -90,9 +92,11 @@ bench-smoke: build
 	$(BUILD)/bench/bench_monotone smoke
 	$(BUILD)/bench/bench_fair_blend smoke
 	$(BUILD)/bench/bench_fair_fit 1000
+	$(BUILD)/bench/bench_surface_analysis smoke
 	$(PYTHON) bench/bench_handover.py smoke
 	$(PYTHON) bench/bench_design_recompute.py smoke
 	$(PYTHON) bench/bench_blend.py smoke
+	$(PYTHON) bench/bench_surface_analysis.py smoke
 
 # The kernel instrumented for libFuzzer (-fsanitize=address,undefined,fuzzer-no-link) and
 # the harnesses; each runs FUZZ_SECONDS from its seed corpus fuzz/corpus/<harness>/.

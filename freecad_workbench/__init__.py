@@ -48,6 +48,14 @@ from .monotone import (  # noqa: E402
     derivative_polygons,
 )
 from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution, monotone_curvature_spline  # noqa: E402
+from .surface_analysis import (  # noqa: E402
+    CurvatureMap,
+    EdgeContinuity,
+    SurfaceCurvature,
+    curvature_map,
+    edge_continuity,
+    surface_curvature,
+)
 from .fair_fit import FairFitReport, fair_edge, fair_edge_report, fair_fit, fair_fit_report  # noqa: E402
 
 __all__ = [
@@ -93,5 +101,11 @@ __all__ = [
     "fair_edge",
     "fair_edge_report",
     "FairFitReport",
+    "SurfaceCurvature",
+    "surface_curvature",
+    "EdgeContinuity",
+    "edge_continuity",
+    "CurvatureMap",
+    "curvature_map",
 ]
 __version__ = "0.1.0"

@@ -182,6 +182,16 @@ def fair_fit(points: FloatArray, tolerance: float, closed: bool = False, noise: 
              start_curvature: Optional[FloatArray] = None,
              end_curvature: Optional[FloatArray] = None, corners: str = "refuse") -> dict[str, object]: ...
 
+# ---- surface analysis (issue 27): shapes as BRep text (Part's exportBrepToString)
+
+def surface_curvature(brep: str, uv: FloatArray
+                      ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
+                                 FloatArray, FloatArray, IntArray]: ...
+def edge_continuity(brep: str, samples_per_span: int = 0, gap_tolerance: float = -1.0,
+                    angle_tolerance: float = 0.1, curvature_tolerance: float = 0.02) -> list[dict]: ...
+def curvature_map(brep: str, quantity: str = "gaussian", deflection: float = 0.0, fraction: float = 0.05,
+                  levels: int = 3) -> tuple[FloatArray, IntArray, FloatArray, IntArray, FloatArray]: ...
+
 # ---- basic shapes and their blends (blending paper, Sections 2-5)
 
 class G2CircleSpline:

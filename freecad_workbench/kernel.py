@@ -89,6 +89,10 @@ derivative_polygons = _kernel.derivative_polygons
 fair_blend = _kernel.fair_blend
 # The fair fit (fair_fit.py).
 fair_fit = _kernel.fair_fit
+# Surface analysis (surface_analysis.py).
+surface_curvature = _kernel.surface_curvature
+edge_continuity = _kernel.edge_continuity
+curvature_map = _kernel.curvature_map
 # Basic shapes (shapes.py).
 sphere_zone = _kernel.sphere_zone
 cylinder = _kernel.cylinder

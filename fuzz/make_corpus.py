@@ -508,6 +508,45 @@ seed("fuzz_blend_surface", "edge_cone_steep",  # issue 13: a cone with slope 1e1
 # encoded here); regression tests in cpp/tests/test_hardening.cpp. The slow fair blends
 # (g2_over_2_minutes, g2_36_seconds, g1_10_seconds) are not seeds: within the work budget
 # they still take seconds in the sanitized build, near FUZZ_TIMEOUT; their tests remain.
+# --- fuzz_surface_analysis -------------------------------------------------------------------
+
+def surface(e, du, dv, extra_u, extra_v, heights, rational=False, scale=None, weights=None, reversed_=False):
+    """A clamped B-spline face: degrees, extra poles, the poles' heights row by row in u."""
+    e.count(du, 1).count(dv, 1).count(extra_u, 0).count(extra_v, 0).flag(rational).flag(scale is not None)
+    if scale is not None:
+        e.number(scale)
+    e.numbers(heights)
+    for w in (weights or []):
+        e.positive(w)
+    return e.flag(reversed_)
+
+
+def analysis_tail(e, uv, quantity=0, angle=None):
+    points_raw(e, uv)
+    e.choice(quantity).flag(angle is not None)
+    return e.number(angle) if angle is not None else e
+
+
+WAVE = [0.0, 0.5, -0.25, 0.75, 0.25, 1.0, 0.5, -0.5, -0.25, 0.0, 0.75, 0.5, 1.0, 0.25, -0.5, 0.0]
+seed("fuzz_surface_analysis", "bicubic_wave_gaussian",
+     analysis_tail(surface(Enc(), 3, 3, 0, 0, WAVE), [(0.5, 0.5), (0, 0), (1, 1)], 0))
+seed("fuzz_surface_analysis", "rational_biquadratic_reversed_radius",
+     analysis_tail(surface(Enc(), 2, 2, 0, 0, WAVE[:9], True, None, [1, 2, 1, 0.5, 1, 2, 1, 1, 0.25], True),
+                   [(0.25, 0.75), (0.5, 0.5)], 5))
+seed("fuzz_surface_analysis", "plane_umbilic_outside_and_nan_uv",
+     analysis_tail(surface(Enc(), 1, 1, 0, 0, [0, 0, 0, 0]), [(0.5, 0.5), (5, 5), (NAN, 0)], 1))
+seed("fuzz_surface_analysis", "scale_1e-300_mean",
+     analysis_tail(surface(Enc(), 3, 1, 1, 0, WAVE[:10], False, 1e-300), [(0.5, 0.5)], 1))
+seed("fuzz_surface_analysis", "scale_1e300_max_abs",
+     analysis_tail(surface(Enc(), 1, 3, 0, 1, WAVE[:10], False, 1e300), [(0.5, 0.5)], 2))
+seed("fuzz_surface_analysis", "nan_height_angle_tolerance_nan",
+     analysis_tail(surface(Enc(), 1, 1, 0, 0, [0, NAN, 0, 0]), [(0.5, 0.5)], 3, NAN))
+seed("fuzz_surface_analysis", "nan_height_continuity",
+     analysis_tail(surface(Enc(), 1, 1, 0, 0, [0, NAN, 0, 0]), [(0.5, 0.5)], 0))
+seed("fuzz_surface_analysis", "huge_heights_min",
+     analysis_tail(surface(Enc(), 2, 1, 0, 0, [1.7e308, -1.7e308, 0, 1e300, 0, 0]), [(0.5, 0.5)], 3))
+
+
 CRASH_SEEDS = {
     "fuzz_basic_curves": [
         "line_segment_1.7e308_raise_inf",

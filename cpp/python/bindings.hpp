@@ -11,6 +11,7 @@ void bindBlendC1(pybind11::module_& m);   // after bindBlend: returns its BlendC
 void bindMonotone(pybind11::module_& m);  // after the InputError translator: registers NoMonotoneSolution
 void bindFairBlend(pybind11::module_& m);
 void bindFairFit(pybind11::module_& m);
+void bindSurfaceAnalysis(pybind11::module_& m);
 
 /// A MonotonicityCertificate as the dict the Python layer reads (bind_monotone.cpp).
 pybind11::dict certificateDict(const MonotonicityCertificate& certificate);

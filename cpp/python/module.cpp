@@ -33,4 +33,5 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindMonotone(m);
   fairsplines::python::bindFairBlend(m);
   fairsplines::python::bindFairFit(m);
+  fairsplines::python::bindSurfaceAnalysis(m);
 }

@@ -180,10 +180,24 @@ register_method("shapes", "control", S.shape, examples=5)
 register_method("shapes", "patches", S.shape, examples=5)
 register_method("shapes", "pole_at", S.shape, [st.one_of(S.choice_arg("start", "end"), S.junk)], examples=10)
 
+# ---- surface analysis ---------------------------------------------------------------------
+_uv = st.floats(-1.0, 7.0)
+GOOD_UV = st.lists(st.tuples(_uv, _uv), min_size=1, max_size=6)
+register("surface_curvature", [st.one_of(S.analysis_face, S.junk), st.one_of(S.points_arg, GOOD_UV)],
+         valid=[S.analysis_face, GOOD_UV], examples=25)
+register("edge_continuity", [st.one_of(S.analysis_shape, S.junk)], valid=[S.analysis_shape],
+         kwargs=dict(samples=st.one_of(st.none(), S.count_arg), gap_tolerance=st.one_of(st.none(), S.number_arg),
+                     angle_tolerance=S.number_arg, curvature_tolerance=S.number_arg), examples=15)
+register("curvature_map", [st.one_of(S.analysis_shape, S.junk)], valid=[S.analysis_shape],
+         kwargs=dict(quantity=S.choice_arg("gaussian", "mean", "max_abs", "min", "max", "radius"),
+                     deflection=st.one_of(st.none(), S.number_arg), fraction=S.number_arg, levels=S.count_arg),
+         examples=10)
+
 # Public names that are not functions to fuzz: exceptions and the result types the API
 # returns (their fields are checked by the contract wherever they come back).
 NOT_CALLABLES = {"InputError", "NoMonotoneSolution", "DesignResult", "ApproximationError", "CurvatureProfile",
-                 "BlendResult", "FairBlendReport", "FairFitReport", "basic.BasicCurve", "basic", "shapes"}
+                 "BlendResult", "FairBlendReport", "FairFitReport",
+                 "SurfaceCurvature", "EdgeContinuity", "CurvatureMap", "basic.BasicCurve", "basic", "shapes"}
 
 
 def public_callables():

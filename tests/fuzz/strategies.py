@@ -267,3 +267,17 @@ def sample_surfaces():
 
 
 freeform_arg = st.one_of(st.none(), st.none(), st.integers(0, 3).map(lambda i: sample_surfaces()[i]), junk)
+
+
+@functools.lru_cache(maxsize=None)
+def analysis_shapes():
+    """Shapes of every kind of face for the surface analysis: analytic, filleted, freeform."""
+    import Part
+
+    box = Part.makeBox(3, 2, 1)
+    return [Part.makeSphere(2.0), box, box.makeFillet(0.4, [box.Edges[0]]), Part.makeCone(2, 0, 3),
+            Part.makeTorus(3, 1), Part.makeCylinder(1, 2), Part.makePlane(1e-6, 1e-6), Part.makeSphere(1e150)]
+
+
+analysis_shape = st.integers(0, 7).map(lambda i: analysis_shapes()[i])
+analysis_face = analysis_shape.map(lambda s: s.Faces[0])

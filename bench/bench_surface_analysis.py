@@ -1,0 +1,127 @@
+"""Python benchmark of surface analysis (issue 27), each against its baseline in one run:
+
+- fw.surface_curvature on N points of a bicubic B-spline face (7 x 7 knot spans) against a
+  Python loop over Face.curvatureAt at the same points; and the kernel alone (the call
+  without the BRep hand-over of the face), in points per second;
+- fw.curvature_map of a torus against the Mesh workbench's curvature (Mesh.getCurvaturePerVertex)
+  on a meshing of the same face: time, and the error of each against the closed form;
+- fw.curvature_map of 10 filleted boxes (260 faces) meshed to 0.001 mm: build time;
+- fw.edge_continuity on a shape of about 500 edges (10 filleted boxes) and on a C2 blend
+  shell of B-spline faces, in seconds per call.
+
+    /usr/bin/python3 bench/bench_surface_analysis.py [smoke]
+
+(smoke: N = 2000 and one filleted box, for `make bench-smoke`.)
+"""
+import math
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+import numpy as np  # noqa: E402
+
+import freecad_workbench as fw  # noqa: E402
+from freecad_workbench import kernel  # noqa: E402
+import FreeCAD  # noqa: E402
+import Part  # noqa: E402
+
+from bench_handover import best  # noqa: E402
+
+V = FreeCAD.Vector
+
+
+def bicubic_face():
+    n = 10  # 10 x 10 poles, 7 x 7 spans
+    poles = [[V(i, j, 0.5 * math.sin(0.9 * i) * math.cos(0.7 * j) + 0.02 * i * j) for j in range(n)] for i in range(n)]
+    knots = list(range(n - 2))
+    mults = [4] + [1] * (n - 4) + [4]
+    s = Part.BSplineSurface()
+    s.buildFromPolesMultsKnots(poles, mults, mults, knots, knots, False, False, 3, 3)
+    return Part.Face(s)
+
+
+def curvature(n):
+    face = bicubic_face()
+    u0, u1, v0, v1 = face.ParameterRange
+    rng = np.random.default_rng(27)
+    uv = np.c_[rng.uniform(u0, u1, n), rng.uniform(v0, v1, n)]
+    brep = face.exportBrepToString()
+    whole = best(lambda: fw.surface_curvature(face, uv), 3, sample=0.2)
+    core = best(lambda: kernel.surface_curvature(brep, uv), 3, sample=0.2)
+    pairs = uv.tolist()
+    t0 = time.perf_counter()
+    for u, v in pairs:
+        face.curvatureAt(u, v)
+    loop = time.perf_counter() - t0
+    print(f"surface_curvature, {n} points of a bicubic face (7 x 7 spans):")
+    print(f"  fw.surface_curvature {whole * 1e3:9.2f} ms   kernel alone {core * 1e3:9.2f} ms "
+          f"({n / core / 1e6:.1f} million points/s)")
+    print(f"  Python loop over Face.curvatureAt {loop * 1e3:9.1f} ms   ratio {loop / whole:.0f}x")
+
+
+def mesh_baseline(deflection):
+    """The torus R = 4, r = 1.25: principal curvatures 1/r and cos(v)/(R + r cos(v)), with
+    cos(v) = (rho - R)/r at a point rho from the axis (convex positive, outward normals)."""
+    import Mesh
+
+    R, r = 4.0, 1.25
+    torus = Part.makeTorus(R, r)
+
+    def exact(points):
+        rho = np.hypot(points[:, 0], points[:, 1])
+        cos_v = (rho - R) / r
+        k = np.c_[np.full(len(points), 1 / r), cos_v / (R + r * cos_v)]
+        return np.sort(k, axis=1)[:, ::-1]
+
+    ours = best(lambda: fw.curvature_map(torus, "max", deflection=deflection, levels=0), 3, sample=0.2)
+    m = fw.curvature_map(torus, "max", deflection=deflection, levels=0)
+    our_error = np.abs(m.values - exact(m.points)[:, 0]).max()
+    mesh = Mesh.Mesh(torus.tessellate(deflection))
+    theirs = best(lambda: mesh.getCurvaturePerVertex(), 3, sample=0.2)
+    points = np.array([[p.x, p.y, p.z] for p in mesh.Points])
+    k = np.array([c[:2] for c in mesh.getCurvaturePerVertex()])
+    mesh_error = np.abs(np.sort(k, axis=1)[:, ::-1] - exact(points)).max(axis=0)
+    print(f"curvature of a torus (R 4, r 1.25), mesh deflection {deflection}:")
+    print(f"  fw.curvature_map ({len(m.points)} vertices) {ours * 1e3:.1f} ms, largest error of k1 {our_error:.1e} /mm")
+    print(f"  Mesh.getCurvaturePerVertex ({len(points)} vertices) {theirs * 1e3:.1f} ms (curvature only), largest "
+          f"error of k1 {mesh_error[0]:.2e}, of k2 {mesh_error[1]:.2e} /mm (k1 = 1/r = 0.8)")
+
+
+def filleted_boxes(count):
+    box = Part.makeBox(10, 10, 10)
+    one = box.makeFillet(1.5, box.Edges)
+    return Part.makeCompound([one.translated(V(15 * i, 0, 0)) for i in range(count)])
+
+
+def map_build(count, deflection):
+    shape = filleted_boxes(count)
+    seconds = best(lambda: fw.curvature_map(shape, "mean", deflection=deflection), 3, sample=0.5)
+    m = fw.curvature_map(shape, "mean", deflection=deflection)
+    print(f"curvature_map of {count} filleted boxes ({len(shape.Faces)} faces), deflection {deflection}: "
+          f"{len(m.points)} vertices, {len(m.triangles)} triangles in {seconds * 1e3:.1f} ms")
+
+
+def continuity(count):
+    shapes = [(f"{count} filleted boxes", filleted_boxes(count))]
+    if count > 1:
+        zone = fw.shapes.SphereZone((0, 0, 0), 2.0, list(np.linspace(0, 2 * math.pi, 25)),
+                                    [-1.2, -0.8, -0.4, 0.0, 0.4, 0.8, 1.2])
+        shapes.append(("C2 blend shell", fw.blend_basic_shape(zone).shell))
+    print("edge_continuity:")
+    for name, shape in shapes:
+        seconds = best(lambda: fw.edge_continuity(shape), 3, sample=0.5)
+        records = fw.edge_continuity(shape)
+        verdicts = {v: sum(r.continuity == v for r in records) for v in sorted({r.continuity for r in records})}
+        samples = sum(r.samples for r in records)
+        print(f"  {name}: {len(shape.Edges)} edges, {len(shape.Faces)} faces: {seconds * 1e3:.1f} ms "
+              f"({samples} evaluations; {verdicts})")
+
+
+if __name__ == "__main__":
+    smoke = sys.argv[1:] == ["smoke"]
+    curvature(2000 if smoke else 200000)
+    mesh_baseline(0.05 if smoke else 0.01)
+    map_build(1 if smoke else 10, 0.05 if smoke else 0.001)
+    continuity(1 if smoke else 10)

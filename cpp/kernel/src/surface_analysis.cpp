@@ -1,0 +1,267 @@
+// Principal curvatures on any face (issue 27), vectorised over points: the shape operator
+// from the first and second fundamental forms (do Carmo, Differential Geometry of Curves
+// and Surfaces, §3-3, Prop. 3 and the expressions of K and H in the local coordinates).
+// OCCT evaluates the surface (BRepAdaptor_Surface::D2, the face's location applied).
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <sstream>
+#include <vector>
+
+#include "fairsplines/errors.hpp"
+#include "fairsplines/surface_analysis.hpp"
+#include "finite.hpp"
+#include "surface_analysis_detail.hpp"
+
+namespace fairsplines {
+
+// ---- reading shapes
+
+TopoDS_Shape readBrepShape(const std::string& text) {
+  if (text.empty()) throw InputError("the shape is empty (no BRep text)");
+  std::istringstream in(text);
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  try {
+    BRepTools::Read(shape, in, builder);
+  } catch (const Standard_Failure& e) {
+    throw InputError(std::string("the shape's BRep text could not be read (") + e.GetMessageString() + ")");
+  }
+  if (shape.IsNull()) throw InputError("the shape's BRep text holds no shape");
+  return shape;
+}
+
+TopoDS_Face singleFace(const TopoDS_Shape& shape) {
+  if (shape.IsNull()) throw InputError("the shape is null");
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  if (faces.Extent() != 1) {
+    throw InputError("expected one face, got a shape with " + std::to_string(faces.Extent()) + " faces");
+  }
+  return TopoDS::Face(faces(1));
+}
+
+namespace detail {
+
+// ---- the frame in the face's sign convention
+
+FaceSurface::FaceSurface(const TopoDS_Face& face) : surface_(face, false) {
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  // The conversion from OCCT's convention: OCCT measures II against Su x Sv and a convex
+  // sphere reads -1/R (GeomLProp_SLProps, Face.curvatureAt, whatever the orientation);
+  // here II is measured against the face normal n = sign (Su x Sv) (Face.normalAt's) with
+  // the opposite sign, L = -Suu.n, so convex as seen from n is positive.
+  sign = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+  if (surface_.GetType() == GeomAbs_BSplineSurface) {
+    const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
+    if (!b.IsNull() && b->NbUKnots() * b->NbVKnots() > 4) {
+      face_ = face;
+      for (int i = 1; i <= b->NbUKnots(); ++i) uKnots_.push_back(b->UKnot(i));
+      for (int i = 1; i <= b->NbVKnots(); ++i) vKnots_.push_back(b->VKnot(i));
+      slots_.resize(std::min(kSpanSlots, (uKnots_.size() + 1) * (vKnots_.size() + 1)));
+    }
+  }
+}
+
+bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
+  gp_Vec suu, svv, suv;
+  adaptor(u, v).D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
+  f.E = f.su.Dot(f.su);
+  f.F = f.su.Dot(f.sv);
+  f.G = f.sv.Dot(f.sv);
+  const gp_Vec cross = f.su.Crossed(f.sv);
+  const double length = cross.Magnitude();
+  // Su x Sv vanishing against the larger of |Su|^2, |Sv|^2: a pole, an apex, a collapsed row.
+  if (!(length > 1e-9 * std::max(f.E, f.G))) return false;
+  f.n = cross * (sign / length);
+  f.L = -suu.Dot(f.n);
+  f.M = -suv.Dot(f.n);
+  f.N = -svv.Dot(f.n);
+  return true;
+}
+
+const BRepAdaptor_Surface& FaceSurface::adaptor(double u, double v) const {
+  if (slots_.empty()) return surface_;
+  const std::size_t su = std::upper_bound(uKnots_.begin(), uKnots_.end(), u) - uKnots_.begin();
+  const std::size_t sv = std::upper_bound(vKnots_.begin(), vKnots_.end(), v) - vKnots_.begin();
+  std::unique_ptr<BRepAdaptor_Surface>& slot = slots_[(su * (vKnots_.size() + 1) + sv) % slots_.size()];
+  if (!slot) slot = std::make_unique<BRepAdaptor_Surface>(face_, false);
+  return *slot;
+}
+
+namespace {
+
+double largest(const Principal& k) { return std::max(std::abs(k.k1), std::abs(k.k2)); }
+
+}  // namespace
+
+bool FaceSurface::curvature(double u, double v, SurfaceFrame& f, Principal& k) const {
+  if (frame(u, v, f)) {
+    k = principalCurvatures(f);
+    return true;
+  }
+  // A degenerate point: the limit along a path into the face, towards the centre of its
+  // parameter box, at two distances (1e-5 and 1e-7 of the box). Where the curvature is
+  // continuous (a sphere's pole) both agree; where it grows like 1/distance (a cone's apex)
+  // the nearer one is 100 times larger and there is no limit.
+  double du = 0.5 * (u0 + u1) - u, dv = 0.5 * (v0 + v1) - v;
+  const double wu = std::max(u1 - u0, 1e-300), wv = std::max(v1 - v0, 1e-300);
+  const double norm = std::hypot(du / wu, dv / wv);
+  if (!(norm > 0.0)) {
+    du = wu;
+    dv = 0.0;
+  } else {
+    du /= norm;
+    dv /= norm;
+  }
+  SurfaceFrame far;
+  if (!frame(u + 1e-5 * du, v + 1e-5 * dv, far) || !frame(u + 1e-7 * du, v + 1e-7 * dv, f)) {
+    k = Principal{};
+    k.dir1 = gp_Vec(1, 0, 0);
+    k.dir2 = gp_Vec(0, 1, 0);
+    f.n = gp_Vec(0, 0, 1);
+    return false;
+  }
+  const Principal kFar = principalCurvatures(far);
+  k = principalCurvatures(f);
+  k.state = PointState::Degenerate;
+  return largest(k) <= 10.0 * largest(kFar) + 1e-300;
+}
+
+// ---- principal curvatures (do Carmo §3-3)
+
+Principal principalCurvatures(const SurfaceFrame& f) {
+  Principal k;
+  const double det = f.E * f.G - f.F * f.F;  // det I > 0 away from degenerate points
+  // The shape operator's matrix W = I^-1 II = [a b; c d].
+  const double a = (f.G * f.L - f.F * f.M) / det, b = (f.G * f.M - f.F * f.N) / det;
+  const double c = (f.E * f.M - f.F * f.L) / det, d = (f.E * f.N - f.F * f.M) / det;
+  const double H = 0.5 * (a + d);                  // mean curvature, (EN - 2FM + GL) / 2 det
+  const double K = (f.L * f.N - f.M * f.M) / det;  // Gaussian curvature, det II / det I
+  const double half = 0.5 * (a - d);
+  const double r = std::sqrt(std::max(half * half + b * c, 0.0));  // k1,2 = H +- sqrt(H^2 - K)
+  // The root without cancellation first, the other from k1 k2 = K.
+  if (H >= 0.0) {
+    k.k1 = H + r;
+    k.k2 = k.k1 != 0.0 ? K / k.k1 : H - r;
+  } else {
+    k.k2 = H - r;
+    k.k1 = K / k.k2;
+  }
+  if (k.k2 > k.k1) std::swap(k.k1, k.k2);  // rounding of K / k1 at an umbilic
+  // The eigenvector of W for k1: (W - k1) x = 0, from the better-conditioned row.
+  const double x0a = b, x1a = k.k1 - a, x0b = k.k1 - d, x1b = c;
+  const bool rowA = x0a * x0a + x1a * x1a >= x0b * x0b + x1b * x1b;
+  const double x0 = rowA ? x0a : x0b, x1 = rowA ? x1a : x1b;
+  gp_Vec dir = f.su * x0 + f.sv * x1;
+  const double scale = std::max(std::abs(k.k1), std::abs(k.k2));
+  const double dirLength = dir.Magnitude();
+  // Umbilic (k1 = k2 to 1e-8 of their size, a plane included): every direction is
+  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides.
+  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dirLength > 1e-12 * std::abs(k.k1 - k.k2) * std::sqrt(f.E + f.G))) {
+    k.state = PointState::Umbilic;
+    dir = f.su.Magnitude() > 0.0 ? f.su : f.sv;
+  }
+  // Orthogonal to n exactly (dir lies in the tangent plane up to rounding).
+  dir -= f.n * dir.Dot(f.n);
+  k.dir1 = dir.Normalized();
+  k.dir2 = f.n.Crossed(k.dir1);
+  return k;
+}
+
+double normalCurvature(const SurfaceFrame& f, const gp_Vec& d) {
+  // a = I^-1 (Su.d, Sv.d): the tangent vector in the basis Su, Sv (least squares for a d
+  // that leaves the tangent plane); kappa_n = II(a, a) / I(a, a).
+  const double det = f.E * f.G - f.F * f.F;
+  const double p = f.su.Dot(d), q = f.sv.Dot(d);
+  const double a0 = (f.G * p - f.F * q) / det, a1 = (f.E * q - f.F * p) / det;
+  const double I = f.E * a0 * a0 + 2.0 * f.F * a0 * a1 + f.G * a1 * a1;
+  const double II = f.L * a0 * a0 + 2.0 * f.M * a0 * a1 + f.N * a1 * a1;
+  return I > 0.0 ? II / I : 0.0;
+}
+
+}  // namespace detail
+
+// ---- the vectorised entry point
+
+namespace {
+
+std::string pointName(Eigen::Index i, double u, double v) {
+  return "point " + std::to_string(i) + " (u = " + exactNumber(u) + ", v = " + exactNumber(v) + ")";
+}
+
+}  // namespace
+
+SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<const Eigen::MatrixXd>& uv) {
+  if (face.IsNull()) throw InputError("the face is null");
+  if (uv.cols() != 2) throw InputError("uv must have 2 columns (u, v), got " + std::to_string(uv.cols()));
+  const Eigen::Index n = uv.rows();
+  if (n == 0) throw InputError("uv is empty: no points to evaluate");
+  if (const Eigen::Index i = firstNonFinite(uv); i >= 0) {
+    throw InputError("uv point " + std::to_string(i) + " is not finite");
+  }
+  const detail::FaceSurface surface(face);
+  const double wu = surface.u1 - surface.u0, wv = surface.v1 - surface.v0;
+  if (!(std::isfinite(wu) && std::isfinite(wv))) throw InputError("the face is unbounded: trim it first");
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double u = uv(i, 0), v = uv(i, 1);
+    if (u < surface.u0 - 0.1 * wu || u > surface.u1 + 0.1 * wu || v < surface.v0 - 0.1 * wv ||
+        v > surface.v1 + 0.1 * wv) {
+      throw InputError(pointName(i, u, v) + " is outside the face's parameter range u in [" + exactNumber(surface.u0) +
+                       ", " + exactNumber(surface.u1) + "], v in [" + exactNumber(surface.v0) + ", " +
+                       exactNumber(surface.v1) + "] by more than 10%");
+    }
+  }
+  SurfaceCurvature out;
+  out.k1.resize(n);
+  out.k2.resize(n);
+  out.gaussian.resize(n);
+  out.mean.resize(n);
+  out.dir1.resize(n, 3);
+  out.dir2.resize(n, 3);
+  out.normal.resize(n, 3);
+  out.points.resize(n, 3);
+  out.state.resize(n);
+  detail::SurfaceFrame f;
+  detail::Principal k;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double u = uv(i, 0), v = uv(i, 1);
+    bool defined = false;
+    try {
+      defined = surface.curvature(u, v, f, k);
+    } catch (const Standard_Failure& e) {
+      throw InputError("the surface cannot be evaluated at " + pointName(i, u, v) + " (" + e.GetMessageString() + ")");
+    }
+    if (!defined) {
+      throw InputError("the curvature is not defined at " + pointName(i, u, v) +
+                       ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
+                       "without bound towards it");
+    }
+    out.k1[i] = k.k1;
+    out.k2[i] = k.k2;
+    out.gaussian[i] = k.k1 * k.k2;
+    out.mean[i] = 0.5 * (k.k1 + k.k2);
+    out.dir1.row(i) << k.dir1.X(), k.dir1.Y(), k.dir1.Z();
+    out.dir2.row(i) << k.dir2.X(), k.dir2.Y(), k.dir2.Z();
+    out.normal.row(i) << f.n.X(), f.n.Y(), f.n.Z();
+    out.points.row(i) << f.p.X(), f.p.Y(), f.p.Z();
+    out.state[i] = static_cast<int>(k.state);
+    if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(out.gaussian[i]))) {
+      throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
+    }
+  }
+  requireFinite(out.dir1, "the principal directions", "rows");
+  requireFinite(out.normal, "the normals", "rows");
+  return out;
+}
+
+}  // namespace fairsplines

@@ -1,0 +1,79 @@
+// Bindings for surface analysis (issue 27): shapes arrive as BRep text (Part's
+// exportBrepToString, the same on every FreeCAD and OCCT version) and results leave as arrays.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "fairsplines/surface_analysis.hpp"
+#include "bindings.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace fairsplines::python {
+
+namespace {
+
+py::dict continuityDict(const EdgeContinuity& r) {
+  py::dict d;
+  d["edge"] = r.edge;
+  d["faces"] = r.faces;
+  d["kind"] = r.kind;
+  d["continuity"] = r.continuity;
+  d["gap"] = r.gap;
+  d["angle"] = r.angle;
+  d["curvature_jump"] = r.curvatureJump;
+  d["curvature_jump_abs"] = r.curvatureJumpAbs;
+  d["curvature_scale"] = r.curvatureScale;
+  d["gap_point"] = r.gapPoint;
+  d["angle_point"] = r.anglePoint;
+  d["curvature_point"] = r.curvaturePoint;
+  d["gap_parameter"] = r.gapParameter;
+  d["angle_parameter"] = r.angleParameter;
+  d["curvature_parameter"] = r.curvatureParameter;
+  d["samples"] = r.samples;
+  return d;
+}
+
+}  // namespace
+
+void bindSurfaceAnalysis(py::module_& m) {
+  m.def(
+      "surface_curvature",
+      [](const std::string& brep, const Eigen::Ref<const Eigen::MatrixXd>& uv) {
+        SurfaceCurvature c = surfaceCurvature(singleFace(readBrepShape(brep)), uv);
+        // Moved into numpy (pybind11 keeps the moved matrix alive): no copy of the results.
+        return py::make_tuple(py::cast(std::move(c.k1)), py::cast(std::move(c.k2)), py::cast(std::move(c.gaussian)),
+                              py::cast(std::move(c.mean)), py::cast(std::move(c.dir1)), py::cast(std::move(c.dir2)),
+                              py::cast(std::move(c.normal)), py::cast(std::move(c.points)),
+                              py::cast(std::move(c.state)));
+      },
+      "brep"_a, "uv"_a,
+      "(k1, k2, gaussian, mean, dir1, dir2, normal, points, state) at the rows (u, v) of uv on the one face of the "
+      "BRep text; convex positive as seen from the face normal; state 0 regular, 1 umbilic, 2 degenerate (a limit).");
+  m.def(
+      "edge_continuity",
+      [](const std::string& brep, int samplesPerSpan, double gapTolerance, double angleTolerance,
+         double curvatureTolerance) {
+        const std::vector<EdgeContinuity> records = edgeContinuity(
+            readBrepShape(brep), ContinuityOptions{samplesPerSpan, gapTolerance, angleTolerance, curvatureTolerance});
+        py::list out;
+        for (const EdgeContinuity& r : records) out.append(continuityDict(r));
+        return out;
+      },
+      "brep"_a, "samples_per_span"_a = 0, "gap_tolerance"_a = -1.0, "angle_tolerance"_a = 0.1,
+      "curvature_tolerance"_a = 0.02,
+      "One dict per edge of the BRep shape (TopExp::MapShapes order): gap, angle (degrees), relative curvature "
+      "jump, verdict and worst points.");
+  m.def(
+      "curvature_map",
+      [](const std::string& brep, const std::string& quantity, double deflection, double fraction, int levels) {
+        const CurvatureMap c =
+            curvatureMap(readBrepShape(brep), parseMapQuantity(quantity), deflection, fraction, levels);
+        return py::make_tuple(c.points, c.triangles, c.values, c.face, c.faceRanges);
+      },
+      "brep"_a, "quantity"_a = "gaussian", "deflection"_a = 0.0, "fraction"_a = 0.05, "levels"_a = 3,
+      "(points, triangles, values, face of each triangle from 1, per-face (min, max)) of the BRep shape's faces.");
+}
+
+}  // namespace fairsplines::python
