@@ -72,11 +72,11 @@ def _through_base(shape, freeform):
     ring = None
     if freeform is not None:
         ring = surface_from_part(freeform, shape.inverse)
-    return shape.base_for_blend(), ring, shape
+    return shape._base_for_blend(), ring, shape
 
 
 def _mapped(image, complex_):
-    return complex_ if image is None else image.map_complex(complex_)
+    return complex_ if image is None else image._map_complex(complex_)
 
 
 def _common_image(shapes):
@@ -162,7 +162,7 @@ def blend_basic_shape(shape: BasicShape, freeform: Optional[SurfaceLike] = None,
         if shape.edited:
             raise InputError("the C1 variant joins the unedited shape (call shape.reset_control())")
         if image is not None:
-            return blend_result(image.map_complex(complex_c1(shape, freeform, at=_interface(shape, at))))
+            return blend_result(image._map_complex(complex_c1(shape, freeform, at=_interface(shape, at))))
         return blend_basic_shape_c1(shape, freeform, at=_interface(shape, at))
     if shape.edited:
         if _interface(shape, at) != "end":
@@ -186,7 +186,7 @@ def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, conti
     if continuity == "C1":
         if image is not None:
             complex_ = complex_c1(shape, freeform, None, naive=True, at=_interface(shape, at))
-            return blend_result(image.map_complex(complex_), single=False)
+            return blend_result(image._map_complex(complex_), single=False)
         return blend_naive_c1(shape, freeform, at=_interface(shape, at))
     return blend_result(_mapped(image, _complex(shape, freeform, "rho", True, _interface_or_auto(shape, at))),
                         single=False)
@@ -255,7 +255,7 @@ def blend_chain(shapes: Union[BasicShape, Sequence[BasicShape]], start: Optional
     start_ring, start_net = _chain_end(start, "start", back)
     end_ring, end_net = _chain_end(end, "end", back)
     if image is not None:
-        shapes = [shape.base_for_blend() for shape in shapes]
+        shapes = [shape._base_for_blend() for shape in shapes]
     edited = [shape.control() if shape.edited else None for shape in shapes]
     complex_ = kernel.blend_chain([shape._revolution() for shape in shapes], edited, start_ring, end_ring, start_net,
                                   end_net, method, True)

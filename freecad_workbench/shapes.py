@@ -321,6 +321,9 @@ def _rational_profile(center, axis, x_axis, points, weights, values, coordinate)
     n = n / np.linalg.norm(n)
     p = np.asarray(points, dtype=float)
     w = np.asarray(weights, dtype=float)
+    if not (np.all(np.isfinite(p)) and np.all(np.isfinite(w))):
+        raise InputError("the quadric's profile overflows at these sizes: its points or weights are not finite "
+                         f"({p.tolist()}, weights {w.tolist()})")
 
     def at(s):
         b = np.array([(1 - s) ** 2, 2 * s * (1 - s), s * s]) * w
@@ -366,7 +369,9 @@ def Paraboloid(center: VectorLike, focal: float, radii: Sequence[float], angles:
     patches lie exactly on the paraboloid."""
     f = _positive(focal, "focal")
     r = _increasing(radii, "radii", 0.0)
-    pts = [(r[0], r[0] ** 2 / (4 * f)), ((r[0] + r[-1]) / 2, r[0] * r[-1] / (4 * f)), (r[-1], r[-1] ** 2 / (4 * f))]
+    with np.errstate(over="ignore", invalid="ignore"):  # _rational_profile names a profile that overflows
+        pts = [(r[0], r[0] ** 2 / (4 * f)), ((r[0] + r[-1]) / 2, r[0] * r[-1] / (4 * f)),
+               (r[-1], r[-1] ** 2 / (4 * f))]
     curve, splits, c, n = _rational_profile(center, axis, x_axis, pts, [1.0, 1.0, 1.0], r, 0)
     return Revolution(curve, c, n, angles, splits)
 
@@ -383,16 +388,17 @@ def Hyperboloid(center: VectorLike, a: float, c: float, heights: Sequence[float]
     if sheets not in (1, 2):
         raise InputError(f"sheets must be 1 or 2, not {sheets!r}")
     z = _increasing(heights, "heights", c if sheets == 2 else None)
-    if sheets == 1:
-        t0, t1 = np.arcsinh(z[0] / c), np.arcsinh(z[-1] / c)
-        point = lambda t: (a * np.cosh(t), c * np.sinh(t))  # noqa: E731
-    else:
-        t0, t1 = np.arccosh(z[0] / c), np.arccosh(z[-1] / c)
-        point = lambda t: (a * np.sinh(t), c * np.cosh(t))  # noqa: E731
-    half = (t1 - t0) / 2
-    # The tangents' intersection: the middle point of the arc's parameter divided by cosh(half).
-    mid = np.array(point((t0 + t1) / 2)) / np.cosh(half)
-    pts = [point(t0), tuple(mid), point(t1)]
+    with np.errstate(over="ignore", invalid="ignore"):  # _rational_profile names a profile that overflows
+        if sheets == 1:
+            t0, t1 = np.arcsinh(z[0] / c), np.arcsinh(z[-1] / c)
+            point = lambda t: (a * np.cosh(t), c * np.sinh(t))  # noqa: E731
+        else:
+            t0, t1 = np.arccosh(z[0] / c), np.arccosh(z[-1] / c)
+            point = lambda t: (a * np.sinh(t), c * np.cosh(t))  # noqa: E731
+        half = (t1 - t0) / 2
+        # The tangents' intersection: the middle point of the arc's parameter divided by cosh(half).
+        mid = np.array(point((t0 + t1) / 2)) / np.cosh(half)
+        pts = [point(t0), tuple(mid), point(t1)]
     curve, splits, cc, n = _rational_profile(center, axis, x_axis, pts, [1.0, np.cosh(half), 1.0], z, 1)
     return Revolution(curve, cc, n, angles, splits)
 
@@ -438,7 +444,7 @@ class AffineImage(_Shape):
     def _revolution(self):
         raise InputError("an affine image is joined through its base shape (fw.blend maps it)")
 
-    def base_for_blend(self) -> BasicShape:
+    def _base_for_blend(self) -> BasicShape:
         """The base shape, carrying this image's edits mapped back (the blends run on it)."""
         if self._control is None:
             return self.base
@@ -448,7 +454,7 @@ class AffineImage(_Shape):
         base._control = kernel.image_g2(self._control, self.inverse)
         return base
 
-    def map_complex(self, complex_: kernel.BlendComplex) -> kernel.BlendComplex:
+    def _map_complex(self, complex_: kernel.BlendComplex) -> kernel.BlendComplex:
         """The blend complex of the base shape under this map."""
         return kernel.image_complex(complex_, self.map)
 
@@ -490,11 +496,12 @@ def Ellipsoid(center: VectorLike, radii: Sequence[float], longitudes: Sequence[f
     axis x x_axis and axis) about `center`: the affine image of the unit sphere zone over
     longitudes and latitudes (a latitude of pi/2: the pole), exact."""
     try:
-        a, b, c = (_positive(r, name) for r, name in zip(radii, ("radius a", "radius b", "radius c")))
+        radii = list(radii)
     except TypeError:
         raise InputError("radii must be three numbers (a, b, c)") from None
-    if len(list(radii)) != 3:
-        raise InputError("radii must be three numbers (a, b, c)")
+    if len(radii) != 3:
+        raise InputError(f"radii must be three numbers (a, b, c), got {len(radii)}")
+    a, b, c = (_positive(r, name) for r, name in zip(radii, ("radius a", "radius b", "radius c")))
     n = _vector3(axis, "axis")
     x, y = _frame(n, x_axis)
     frame = np.column_stack([x, y, np.cross(x, y)])

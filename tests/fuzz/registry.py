@@ -3,6 +3,7 @@
 to (strategy of (callable, args, kwargs), max_examples). test_coverage fails for a public
 callable without an entry."""
 import inspect
+import math
 from typing import NamedTuple
 
 from hypothesis import strategies as st
@@ -171,6 +172,23 @@ register("shapes.SphereZone", [V, N, A, A], dict(axis=V, x_axis=st.one_of(st.non
 register("shapes.Cylinder", [V, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=30)
 register("shapes.Cone", [V, N, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=30)
 register("shapes.Torus", [V, N, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=30)
+# Issue 32: a designed profile revolved, quadrics, images and cyclides.
+PROFILE = st.one_of(S.junk, st.sampled_from(["parabola", "crossing"]).map(S.revolution_profile))
+register("shapes.Revolution", [PROFILE, V, V, A], dict(splits=st.one_of(st.none(), A)),
+         valid=[st.just("parabola").map(S.revolution_profile), st.just((0, 0, 0)), st.just((0, 0, 1)),
+                st.just([0.0, 2.0, 4.0, 2 * math.pi])], examples=30)
+register("shapes.Paraboloid", [V, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=20)
+register("shapes.Hyperboloid", [V, N, N, A, A], dict(sheets=st.one_of(st.sampled_from([1, 2]), S.junk), axis=V,
+                                                     x_axis=st.one_of(st.none(), V)), examples=20)
+register("shapes.Ellipsoid", [V, st.one_of(st.lists(N, min_size=0, max_size=4), S.junk), A, A],
+         dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=20)
+register("shapes.HyperbolicCylinder", [V, N, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=20)
+register("shapes.DupinCyclide", [V, N, N, N, A, A], dict(axis=V, x_axis=st.one_of(st.none(), V)), examples=20)
+MATRIX = st.one_of(S.junk, st.lists(N, min_size=9, max_size=9), st.lists(st.floats(-3, 3), min_size=9, max_size=9))
+register("shapes.AffineImage", [st.one_of(S.shape, S.junk), MATRIX], dict(translation=V), examples=20)
+register("shapes.ProjectiveImage", [st.one_of(S.shape, S.junk),
+                                    st.one_of(S.junk, st.lists(st.floats(-3, 3), min_size=16, max_size=16))],
+         examples=20)
 INDEX = st.one_of(st.integers(-2, 6), S.junk, st.sampled_from([1.5, True, 2 ** 63]))
 register_method("shapes", "control_point", S.shape, [INDEX] * 4, examples=25)
 register_method("shapes", "set_control", S.shape, [INDEX] * 4 + [V], dict(weight=st.one_of(st.none(), N)), examples=25)

@@ -242,6 +242,14 @@ SHAPE_SAMPLES = {  # a fresh valid shape each draw (set_control edits it)
     "Cylinder far": lambda fw: fw.shapes.Cylinder((1e12, 1e12, 0), 1, _LONGITUDES, [0, 1, 2]),
     "Cone tiny": lambda fw: fw.shapes.Cone((0, 0, 0), 5e-324, 0.2, [0, 1, 2], [0, 1]),
     "SphereZone tiny": lambda fw: fw.shapes.SphereZone((0, 0, 0), 5e-324, _LONGITUDES, [-0.5, 0.2, 0.7]),
+    # Issue 32: every basic shape the blending paper names.
+    "Paraboloid": lambda fw: fw.shapes.Paraboloid((0, 0, 0), 1.0, [0.5, 1.0, 2.0], _LONGITUDES),
+    "Hyperboloid": lambda fw: fw.shapes.Hyperboloid((0, 0, 0), 1.0, 2.0, [-1.0, 0.0, 1.0], _LONGITUDES),
+    "Hyperboloid two sheets": lambda fw: fw.shapes.Hyperboloid((0, 0, 0), 1.0, 1.0, [1.5, 2.0, 3.0], _LONGITUDES,
+                                                               sheets=2),
+    "Ellipsoid": lambda fw: fw.shapes.Ellipsoid((0, 0, 0), (3.0, 2.0, 1.0), _LONGITUDES, [-0.5, 0.2, 0.7]),
+    "HyperbolicCylinder": lambda fw: fw.shapes.HyperbolicCylinder((0, 0, 0), 1.0, 2.0, [-0.6, 0.0, 0.6], [0, 1, 2]),
+    "DupinCyclide": lambda fw: fw.shapes.DupinCyclide((0, 0, 0), 5.0, 1.0, 2.0, [0, 2, 4, 2 * math.pi], [0, 1, 2]),
 }
 
 
@@ -249,6 +257,20 @@ def shape_instance(name):
     import freecad_workbench as fw
 
     return SHAPE_SAMPLES[name](fw)
+
+
+def revolution_profile(name):
+    """A profile for fw.shapes.Revolution in the xz plane: a parabola arc off the z axis
+    ("parabola"), or a line crossing it ("crossing", refused)."""
+    import FreeCAD
+    import Part
+
+    if name == "crossing":
+        return Part.LineSegment(FreeCAD.Vector(-1, 0, 0), FreeCAD.Vector(1, 0, 1)).toBSpline()
+    curve = Part.BSplineCurve()
+    curve.buildFromPolesMultsKnots([FreeCAD.Vector(1, 0, 0.25), FreeCAD.Vector(1.5, 0, 0.5),
+                                    FreeCAD.Vector(2, 0, 1)], [3, 3], [0.0, 1.0], False, 2)
+    return curve
 
 
 shape = st.sampled_from(sorted(SHAPE_SAMPLES)).map(shape_instance)
