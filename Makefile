@@ -74,6 +74,7 @@ bench: build
 	$(BUILD)/bench/bench_blend
 	$(BUILD)/bench/bench_monotone
 	$(BUILD)/bench/bench_fair_blend
+	$(BUILD)/bench/bench_fair_blend_space
 	$(BUILD)/bench/bench_fair_fit
 	$(PYTHON) bench/bench_handover.py
 	$(PYTHON) bench/bench_design_recompute.py
@@ -87,6 +88,7 @@ bench-smoke: build
 	$(BUILD)/bench/bench_blend smoke
 	$(BUILD)/bench/bench_monotone smoke
 	$(BUILD)/bench/bench_fair_blend smoke
+	$(BUILD)/bench/bench_fair_blend_space smoke
 	$(BUILD)/bench/bench_fair_fit 1000
 	$(PYTHON) bench/bench_handover.py smoke
 	$(PYTHON) bench/bench_design_recompute.py smoke

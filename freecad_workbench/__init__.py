@@ -47,7 +47,13 @@ from .monotone import (  # noqa: E402
     curvature_variation,
     derivative_polygons,
 )
-from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution, monotone_curvature_spline  # noqa: E402
+from .fair_blend import (  # noqa: E402
+    FairBlendReport,
+    fair_blend,
+    fair_blend_solution,
+    fair_blend_space_solution,
+    monotone_curvature_spline,
+)
 from .fair_fit import FairFitReport, fair_edge, fair_edge_report, fair_fit, fair_fit_report  # noqa: E402
 
 __all__ = [
@@ -79,6 +85,7 @@ __all__ = [
     "NoMonotoneSolution",
     "fair_blend",
     "fair_blend_solution",
+    "fair_blend_space_solution",
     "FairBlendReport",
     "monotone_curvature_spline",
     "monotone_curvature_solution",
