@@ -84,9 +84,27 @@ def test_edges_of_two_skew_cylinders_blend_in_space_with_the_edges_own_jets(cont
     assert curve.Continuity in ("C2", "CN")
 
 
+def import_partdesign():
+    """PartDesign, whose Python package lives in FreeCAD's Mod folder (not on sys.path when
+    FreeCAD is imported as a library)."""
+    import os
+    import sys
+
+    try:
+        import PartDesign  # noqa: F401
+    except ImportError:
+        for root in (FreeCAD.getResourceDir(), FreeCAD.getHomePath()):
+            sys.path.append(os.path.join(root, "Mod"))
+        try:
+            import PartDesign  # noqa: F401
+        except ImportError:
+            pytest.skip("PartDesign is not available")
+
+
 def test_partdesign_solid_edges_blend_g2_with_occts_curvature_vectors(doc):
-    """Edges of a PartDesign solid (a pad of a circle, and a second body's cylinder turned
-    out of its plane), blended G2: OCCT's curvature vectors of the edges are met."""
+    """Edges of PartDesign solids (a cylinder, and a torus of a second body placed out of its
+    plane), blended G2: OCCT's curvature vectors of the edges are met."""
+    import_partdesign()
     body = doc.addObject("PartDesign::Body", "Body")
     cyl = body.newObject("PartDesign::AdditiveCylinder", "Cylinder")
     cyl.Radius, cyl.Height = 3.0, 6.0

@@ -9,6 +9,8 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -59,13 +61,18 @@ BSplineCurve followSpiral(const SpaceSpiral& c, const Ends3& e, const std::vecto
   const int n = K + 2;
   TColStd_Array1OfReal knots(1, n + 4);
   for (int i = 0; i < n + 4; ++i) knots(i + 1) = sigma[std::clamp(i - 3, 0, K - 1)];
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), B(n, 3);
+  // Each row has the 4 basis functions of one span: a sparse (banded) system, so that a
+  // refined cubic of 400 spans costs O(n), not the O(n^3) of a dense solve.
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd B(n, 3);
   int row = 0;
   math_Matrix basis(1, 3, 1, 4);
   auto addRow = [&](double u, int order, const Vec3& rhs) {
     Standard_Integer first = 0;
     BSplCLib::EvalBsplineBasis(order, 4, knots, u, first, basis);
-    for (int j = 0; j < 4; ++j) A(row, first - 1 + j) = basis(order + 1, j + 1);
+    for (int j = 0; j < 4; ++j) {
+      if (basis(order + 1, j + 1) != 0.0) entries.emplace_back(row, first - 1 + j, basis(order + 1, j + 1));
+    }
     B.row(row++) = rhs.transpose();
   };
   const double L = c.length;
@@ -78,7 +85,11 @@ BSplineCurve followSpiral(const SpaceSpiral& c, const Ends3& e, const std::vecto
   addRow(1.0, 0, e.p1);
   addRow(1.0, 1, L * e.T1);
   addRow(1.0, 2, L * L * e.K1);
-  const Eigen::MatrixXd P = A.partialPivLu().solve(B);
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+  Eigen::MatrixXd P =
+      lu.info() == Eigen::Success ? Eigen::MatrixXd(lu.solve(B)) : Eigen::MatrixXd(A.toDense().partialPivLu().solve(B));
   BSplineCurve curve;
   curve.degree = 3;
   curve.poles = P;
@@ -91,10 +102,11 @@ BSplineCurve followSpiral(const SpaceSpiral& c, const Ends3& e, const std::vecto
 /// The spiral followed by a certified cubic: spans are halved where the certificate does not
 /// prove the curvature to run the way `wanted` (with two neighbours on each side), until it
 /// does or the limits are reached.
-std::pair<BSplineCurve, bool> certifiedFollow(const SpaceSpiral& c, const Ends3& e, CurvatureTrend wanted) {
-  std::vector<double> sigma = firstKnots(4);
+std::pair<BSplineCurve, bool> certifiedFollow(const SpaceSpiral& c, const Ends3& e, CurvatureTrend wanted,
+                                              bool refine) {
+  std::vector<double> sigma = firstKnots(refine ? 4 : 8);
   BSplineCurve curve;
-  for (int round = 0; round < kMaxRounds && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
+  for (int round = 0; round < (refine ? kMaxRounds : 1) && static_cast<int>(sigma.size()) - 1 <= kMaxSpans; ++round) {
     detail::WorkBudget::spend(64.0 * static_cast<double>(sigma.size()));
     curve = followSpiral(c, e, sigma);
     if (!curve.poles.allFinite()) break;
@@ -273,7 +285,9 @@ SpaceFairBlend fairBlendSpace(const SpaceBlendEnds& ends) {
       e.K1 = s.k1 * (f.N - f.N.dot(T1) * T1);
     }
     const CurvatureTrend wanted = s.k1 > s.k0 ? CurvatureTrend::Increasing : CurvatureTrend::Decreasing;
-    auto [local, proved] = certifiedFollow(s, e, wanted);
+    // A monotone spiral is refined until the cubic is proved monotone; a non-monotone one is
+    // followed with 8 spans (refining would only resolve its extrema into more of them).
+    auto [local, proved] = certifiedFollow(s, e, wanted, sol.monotone);
     if (local.poles.rows() == 0 || !local.poles.allFinite()) {
       throw InputError("the cubic following the space spiral is not finite");
     }
