@@ -339,7 +339,11 @@ SpaceSpiralSolution solveSpaceG2(const Vec3& T0, const Vec3& K0, const Vec3& p1,
       }
     }
   }
+  int afterMonotone = 0;  // starts tried since a monotone solution was found
   for (VecX z : starts) {
+    // A monotone solution whose torsion changes sign: a few more starts may find one of one
+    // sign (27 starts cost 20 ms where the ends' torsion must change sign).
+    if (out.monotone && ++afterMonotone > 4) break;
     grid = 0;
     grid = spiralOf(z).gridFor(1.0);  // fixed for the solve: the residual stays smooth
     if (!solve(residual, z)) continue;
