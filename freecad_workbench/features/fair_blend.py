@@ -1,6 +1,8 @@
-"""The Fair blend: a parametric planar cubic B-spline whose curvature is monotone, proved by
-the exact certificate, that bridges two edges' end points with their tangents (G1) and
-curvatures (G2, the default), or two vertices with given directions (and curvatures).
+"""The Fair blend: a parametric cubic B-spline whose curvature is monotone, proved by the
+exact certificate, that bridges two edges' end points with their tangents (G1) and
+curvatures (G2, the default), or two vertices with given directions (and curvatures). Planar
+where the ends share a plane; where they do not, the fair blend in space
+(fw.fair_blend_space_solution, issue 28), G2 to the edges' curvature vectors.
 Headless; a view provider is attached only when FreeCAD.GuiUp.
 
     from freecad_workbench.features.fair_blend import make_fair_blend
