@@ -185,9 +185,11 @@ TEST(SpaceCertificate, PlanarCurvesHaveNoTorsionAndAgreeWithThePlanarCertificate
 // torsion, judged by OCCT.
 void sweep(bool g2, double wantedRate) {
   std::mt19937 rng(g2 ? 2802 : 2801);
-  int monotone = 0, disagreements = 0;
+  int monotone = 0, disagreements = 0, oneSign = 0, oneSignFlipped = 0;
   for (int i = 0; i < 1000; ++i) {
     const SpaceCase sc = randomSpaceCase(rng);
+    // The generating curve's torsion at 1/3 and 2/3 of its length (linear between).
+    const double tauA = sc.tau0 + (sc.tau1 - sc.tau0) / 3.0, tauB = sc.tau0 + 2.0 * (sc.tau1 - sc.tau0) / 3.0;
     SpaceBlendEnds ends = sc.ends;
     if (!g2) ends.K0 = ends.K1 = Vector3d::Constant(std::nan(""));
     const SpaceFairBlend b = fairBlendSpace(ends);
@@ -205,7 +207,14 @@ void sweep(bool g2, double wantedRate) {
                     << "), certificate: " << b.reason;
     }
     EXPECT_FALSE(b.planar) << i;
+    if (tauA * tauB > 0.0) {  // ends that a curve of torsion of one sign joins
+      ++oneSign;
+      oneSignFlipped += b.torsionSignChanges > 0;
+    }
   }
+  std::printf("%s: %d of %d ends cut from a curve of torsion of one sign got a torsion flip\n", g2 ? "G2" : "G1",
+              oneSignFlipped, oneSign);
+  EXPECT_EQ(oneSignFlipped, 0) << "torsion of one sign where the ends allow it";
   std::printf("%s: %d of 1000 certified monotone\n", g2 ? "G2" : "G1", monotone);
   EXPECT_GE(monotone, wantedRate * 1000) << (g2 ? "G2" : "G1");
   EXPECT_EQ(disagreements, 0) << "certified extrema OCCT does not see";
