@@ -15,6 +15,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include "fairsplines/errors.hpp"
@@ -300,6 +301,28 @@ SpaceFairBlend fairBlendSpace(const SpaceBlendEnds& ends) {
       why << "; " << sol.reason;
     else if (!proved)
       why << ", not all proved monotone";
+    if (g2 && !sol.monotone) {
+      // The fairest found: of this cubic and the G1 spiral followed with the given curvature
+      // vectors (both G2 to the ends), the fewest curvature extrema, then the fewest torsion
+      // sign changes, then the least variation.
+      const detail::SpaceSpiralSolution g1 = detail::solveSpaceG1(T0, u, T1);
+      if (g1.best) {
+        const SpaceSpiral& c = *g1.best;
+        BSplineCurve other = toModel(certifiedFollow(c, e0, wanted, false).first, r, ends, true);
+        if (other.poles.allFinite()) {
+          const SpaceCurvatureCertificate a = certifySpaceCurvature(out.curve), b = certifySpaceCurvature(other);
+          const auto key = [](const SpaceCurvatureCertificate& x, const BSplineCurve& curve) {
+            return std::make_tuple(x.extrema.size(), x.torsionSignChanges.size(), spaceVariation(curve));
+          };
+          if (key(b, other) < key(a, out.curve)) {
+            out.curve = std::move(other);
+            out.length = c.length * r;
+            why << "; the G1 space spiral followed with the given curvature vectors is fairer (" << b.extrema.size()
+                << " curvature extrema against " << a.extrema.size() << ") and is shown instead";
+          }
+        }
+      }
+    }
     out.reason = why.str();
   }
   requireFinite(out.curve.poles, "the space blend", "poles");
