@@ -76,6 +76,7 @@ bench: build
 	$(BUILD)/bench/bench_blend
 	$(BUILD)/bench/bench_monotone
 	$(BUILD)/bench/bench_fair_blend
+	$(BUILD)/bench/bench_fair_blend_space
 	$(BUILD)/bench/bench_fair_fit
 	$(BUILD)/bench/bench_surface_analysis
 	$(PYTHON) bench/bench_handover.py
@@ -91,6 +92,7 @@ bench-smoke: build
 	$(BUILD)/bench/bench_blend smoke
 	$(BUILD)/bench/bench_monotone smoke
 	$(BUILD)/bench/bench_fair_blend smoke
+	$(BUILD)/bench/bench_fair_blend_space smoke
 	$(BUILD)/bench/bench_fair_fit 1000
 	$(BUILD)/bench/bench_surface_analysis smoke
 	$(PYTHON) bench/bench_handover.py smoke

@@ -47,7 +47,13 @@ from .monotone import (  # noqa: E402
     curvature_variation,
     derivative_polygons,
 )
-from .fair_blend import FairBlendReport, fair_blend, fair_blend_solution, monotone_curvature_spline  # noqa: E402
+from .fair_blend import (  # noqa: E402
+    FairBlendReport,
+    fair_blend,
+    fair_blend_solution,
+    fair_blend_space_solution,
+    monotone_curvature_spline,
+)
 from .surface_analysis import (  # noqa: E402
     CurvatureMap,
     EdgeContinuity,
@@ -87,6 +93,7 @@ __all__ = [
     "NoMonotoneSolution",
     "fair_blend",
     "fair_blend_solution",
+    "fair_blend_space_solution",
     "FairBlendReport",
     "monotone_curvature_spline",
     "monotone_curvature_solution",

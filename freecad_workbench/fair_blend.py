@@ -34,7 +34,7 @@ from . import kernel
 from .errors import InputError, NoMonotoneSolution
 from .kernel import CurveLike, VectorLike, as_choice, as_vector, require_bounded, to_part
 from .monotone import METHODS as PAPER_METHODS
-from .monotone import MonotonicityReport, monotone_curvature_solution, report_from_certificate
+from .monotone import MonotonicityReport, SpanVerdict, monotone_curvature_solution, report_from_certificate
 
 if TYPE_CHECKING:
     import Part
@@ -60,6 +60,8 @@ class FairBlendReport:
     normal: Tuple[float, float, float]
     certificate: MonotonicityReport
     reason: str
+    torsion_sign_changes: int = 0  #: sign changes of the torsion along the blend (0 for a planar blend)
+    planar: bool = True  #: the ends are coplanar and the blend lies in their plane
 
     def __bool__(self):
         return self.monotone
@@ -96,8 +98,8 @@ def _optional_curvature(value, name):
     return k
 
 
-def fair_blend_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike, k0: Optional[float] = None,
-                        k1: Optional[float] = None,
+def fair_blend_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike,
+                        k0: Union[None, float, VectorLike] = None, k1: Union[None, float, VectorLike] = None,
                         normal: Optional[VectorLike] = None) -> tuple[Part.BSplineCurve, FairBlendReport]:
     """The fair blend from p0 with direction t0 to p1 with direction t1 (G1), or also with
     the signed end curvatures k0, k1 (G2): (Part.BSplineCurve, FairBlendReport).
@@ -106,7 +108,15 @@ def fair_blend_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: Vect
     Never raises for ends that admit no monotone curve: the report says so (report.monotone
     False, report.reason why) and the curve is the fairest found, still meeting the ends.
     Raises InputError on bad input: NaN, a zero tangent, coincident points, ends not in one
-    plane, only one of k0 and k1, curvatures of ends outside the XY plane without a normal."""
+    plane, only one of k0 and k1, curvatures of ends outside the XY plane without a normal.
+
+    In space: k0, k1 may be the end curvature vectors kappa N (3 numbers each, as OCCT
+    evaluates an edge: (d1 x d2) x d1 / |d1|^4); and G1 ends that do not lie in one plane
+    (no normal given) get the fair blend in space (fair_blend_space_solution)."""
+    if _is_vector(k0) or _is_vector(k1):
+        return fair_blend_space_solution(p0, t0, p1, t1, k0, k1)
+    if normal is None and k0 is None and k1 is None and not _coplanar(p0, t0, p1, t1):
+        return fair_blend_space_solution(p0, t0, p1, t1)
     result = kernel.fair_blend(
         as_vector(p0, "p0"),
         as_vector(t0, "t0"),
@@ -132,6 +142,81 @@ def fair_blend_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: Vect
         normal=tuple(float(c) for c in result["normal"]),
         certificate=certificate,
         reason=result["reason"],
+    )
+    return to_part(kernel_curve), report
+
+
+def _is_vector(value):
+    return value is not None and not isinstance(value, (int, float, np.floating, np.integer))
+
+
+def _coplanar(p0, t0, p1, t1, tol=1e-9):
+    """Do the chord and the two tangents lie in one plane (within the planar solver's 1e-9)?"""
+    u = as_vector(p1, "p1") - as_vector(p0, "p0")
+    vectors = [v / np.linalg.norm(v) for v in (u, as_vector(t0, "t0"), as_vector(t1, "t1")) if np.linalg.norm(v) > 0]
+    if len(vectors) < 3 or not all(np.all(np.isfinite(v)) for v in vectors):
+        return True  # the kernel names the problem
+    return abs(float(np.dot(vectors[0], np.cross(vectors[1], vectors[2])))) <= tol
+
+
+def _space_report(cert):
+    """A MonotonicityReport of the kernel's space certificate (curvatures unsigned, no plane)."""
+    extrema = [tuple(e) for e in cert["extrema"]]
+    spans = []
+    for i, s in enumerate(cert["spans"]):
+        inside = [e for e in extrema if s["u0"] <= e[0] <= s["u1"]] if s["trend"] == "extremum" else []
+        extremum = (float(inside[0][0]), float(inside[0][1]), bool(inside[0][2])) if inside else None
+        trend = s["trend"] if s["trend"] != "extremum" or extremum else "undecided"
+        spans.append(SpanVerdict(i, s["u0"], s["u1"], s["kappa0"], s["kappa1"], trend, s["reason"], extremum, None))
+    return MonotonicityReport(bool(cert["monotone"]), bool(cert["increasing"]), bool(cert["decreasing"]),
+                              float(cert["kappa_start"]), float(cert["kappa_end"]), (0.0, 0.0, 0.0), cert["reason"],
+                              tuple(spans))
+
+
+def _curvature_vector(value, name):
+    if value is None:
+        return np.full(3, np.nan)
+    return as_vector(value, name)
+
+
+def fair_blend_space_solution(p0: VectorLike, t0: VectorLike, p1: VectorLike, t1: VectorLike,
+                              K0: Optional[VectorLike] = None,
+                              K1: Optional[VectorLike] = None) -> tuple[Part.BSplineCurve, FairBlendReport]:
+    """The fair blend between two ends anywhere in space: from p0 with direction t0 to p1 with
+    direction t1 (G1), or also with the end curvature vectors K0, K1 (kappa N, G2).
+    Coplanar ends get the planar fair blend in their plane; otherwise the blend follows a
+    space spiral (curvature monotone in arc length, torsion of one sign where it can) as a C2
+    cubic whose curvature the space certificate proves monotone (docs/FAIR_BLENDS.md).
+    report.kappa0/kappa1 are the curvatures (unsigned) at the ends, report.turning the angle
+    between the end tangents, report.torsion_sign_changes and report.planar say how it twists.
+    Never raises for ends that admit no monotone curve (report.monotone False, report.reason).
+    Raises InputError on bad input: NaN, a zero tangent, coincident points, only one of K0 and
+    K1, a curvature vector along its tangent."""
+    if (K0 is None) != (K1 is None):
+        raise InputError("give both end curvature vectors K0 and K1 for a G2 blend, or neither for G1")
+    a0, a1 = as_vector(t0, "t0"), as_vector(t1, "t1")
+    result = kernel.fair_blend_space(as_vector(p0, "p0"), a0, as_vector(p1, "p1"), a1,
+                                     _curvature_vector(K0, "K0"), _curvature_vector(K1, "K1"))
+    kernel_curve = result["curve"]
+    cert = result["certificate"]
+    certificate = _space_report(cert)
+    n0, n1 = np.linalg.norm(a0), np.linalg.norm(a1)
+    turning = float(np.arctan2(np.linalg.norm(np.cross(a0, a1)), np.dot(a0, a1))) if n0 > 0 and n1 > 0 else 0.0
+    report = FairBlendReport(
+        monotone=bool(result["monotone"]),
+        continuity="G1" if K0 is None else "G2",
+        kappa0=float(cert["kappa_start"]),
+        kappa1=float(cert["kappa_end"]),
+        turning=turning,
+        length=float(result["length"]),
+        variation=float(result["variation"]),
+        spans=int(result["spans"]),
+        extrema=tuple((float(u), float(k), bool(m)) for u, k, m in cert["extrema"]),
+        normal=tuple(float(c) for c in result["normal"]),
+        certificate=certificate,
+        reason=result["reason"],
+        torsion_sign_changes=int(result["torsion_sign_changes"]),
+        planar=bool(result["planar"]),
     )
     return to_part(kernel_curve), report
 
@@ -221,6 +306,24 @@ def _plane_normal(a, b):
     return None
 
 
+def curvature_vector(end):
+    """kappa N of an EdgeEnd, as OCCT's derivatives give it: (d1 x d2) x d1 / |d1|^4."""
+    return np.cross(np.cross(end.d1, end.d2), end.d1) / np.linalg.norm(end.d1) ** 4
+
+
+def _ends_in_plane(a, b, normal, g2, tol=1e-9):
+    """Do the ends lie in the plane of `normal` as the planar solver needs (the chord and the
+    tangents within 1e-9; for G2 the curvature vectors too, relative to their length)? No
+    normal: everything on one line, which the planar solver handles."""
+    if normal is None:
+        return True
+    chord = b.point - a.point
+    vectors = [chord / max(np.linalg.norm(chord), 1e-300), a.tangent, b.tangent]
+    if g2:
+        vectors += [v / np.linalg.norm(v) for v in (curvature_vector(a), curvature_vector(b)) if np.linalg.norm(v) > 0]
+    return all(abs(float(np.dot(v, normal))) <= tol for v in vectors)
+
+
 def _signed_curvature(end, normal):
     return float(np.dot(np.cross(end.d1, end.d2), normal) / np.linalg.norm(end.d1) ** 3)
 
@@ -263,6 +366,11 @@ def fair_blend(edge_a: CurveLike, end_a: Union[str, Part.Vertex, VectorLike], ed
     a = edge_end(edge_a, end_a, leaving=True, name="edge_a")
     b = edge_end(edge_b, end_b, leaving=False, name="edge_b")
     normal = _plane_normal(a, b)
+    if not _ends_in_plane(a, b, normal, continuity == "G2"):  # in space: curvature vectors, not signs
+        if continuity == "G2":
+            return fair_blend_space_solution(a.point, a.tangent, b.point, b.tangent, curvature_vector(a),
+                                             curvature_vector(b))
+        return fair_blend_space_solution(a.point, a.tangent, b.point, b.tangent)
     k0 = k1 = None
     if continuity == "G2":
         if normal is None:  # straight ends and straight edges: any plane through them, curvatures 0

@@ -82,11 +82,13 @@ analyze_end_conditions = _kernel.analyze_end_conditions
 monotone_spline = _kernel.monotone_spline
 design_monotone = _kernel.design_monotone
 certify_monotone = _kernel.certify_monotone
+certify_space_curvature = _kernel.certify_space_curvature
 check_segments = _kernel.check_segments
 curvature_variation = _kernel.curvature_variation
 derivative_polygons = _kernel.derivative_polygons
 # Fair blends (fair_blend.py).
 fair_blend = _kernel.fair_blend
+fair_blend_space = _kernel.fair_blend_space
 # The fair fit (fair_fit.py).
 fair_fit = _kernel.fair_fit
 # Surface analysis (surface_analysis.py).

@@ -29,6 +29,21 @@ void bindFairBlend(py::module_& m) {
       "k1"_a = std::numeric_limits<double>::quiet_NaN(), "normal"_a = Eigen::Vector3d::Zero(),
       "fairBlend: the certified monotone-curvature cubic between two ends (NaN curvature: G1 there; zero normal: "
       "derived).");
+
+  m.def(
+      "fair_blend_space",
+      [](const Eigen::Vector3d& p0, const Eigen::Vector3d& t0, const Eigen::Vector3d& p1, const Eigen::Vector3d& t1,
+         const Eigen::Vector3d& K0, const Eigen::Vector3d& K1) {
+        const SpaceFairBlend b = fairBlendSpace(SpaceBlendEnds{p0, t0, p1, t1, K0, K1});
+        return py::dict("curve"_a = b.curve, "certificate"_a = spaceCertificateDict(b.certificate),
+                        "monotone"_a = b.monotone, "planar"_a = b.planar, "normal"_a = b.normal,
+                        "curvature_extrema"_a = b.curvatureExtrema, "torsion_sign_changes"_a = b.torsionSignChanges,
+                        "length"_a = b.length, "variation"_a = b.variation, "spans"_a = b.spans, "reason"_a = b.reason);
+      },
+      "p0"_a, "t0"_a, "p1"_a, "t1"_a, "K0"_a = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()),
+      "K1"_a = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()),
+      "fairBlendSpace: the fair blend of two ends in space (K0, K1: end curvature vectors kappa N for G2; NaN: "
+      "G1); coplanar ends get fairBlend's planar result.");
 }
 
 }  // namespace fairsplines::python

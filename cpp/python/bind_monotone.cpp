@@ -52,6 +52,20 @@ py::dict certificateDict(const MonotonicityCertificate& c) {
                   "reason"_a = c.reason, "spans"_a = spans);
 }
 
+py::dict spaceCertificateDict(const SpaceCurvatureCertificate& c) {
+  py::list spans, extrema;
+  for (const SpaceSpanCertificate& s : c.spans) {
+    spans.append(py::dict("u0"_a = s.u0, "u1"_a = s.u1, "kappa0"_a = s.kappa0, "kappa1"_a = s.kappa1,
+                          "trend"_a = trendName(s.trend), "degree"_a = s.degree, "torsion_sign"_a = s.torsionSign,
+                          "torsion_changes"_a = s.torsionChanges, "reason"_a = s.reason));
+  }
+  for (const auto& [u, kappa, maximum] : c.extrema) extrema.append(py::make_tuple(u, kappa, maximum));
+  return py::dict("monotone"_a = c.monotone, "increasing"_a = c.increasing, "decreasing"_a = c.decreasing,
+                  "planar"_a = c.planar, "kappa_start"_a = c.kappaStart, "kappa_end"_a = c.kappaEnd,
+                  "extrema"_a = extrema, "torsion_sign_changes"_a = c.torsionSignChanges, "reason"_a = c.reason,
+                  "spans"_a = spans);
+}
+
 void bindMonotone(py::module_& m) {
   // No curve of the family meets the end conditions: a subclass of InputError (a ValueError).
   static py::exception<NoMonotoneSolution> noSolution(m, "NoMonotoneSolution", m.attr("InputError"));
@@ -121,6 +135,15 @@ void bindMonotone(py::module_& m) {
       "certify_monotone",
       [](const BSplineCurve& curve, double relTol) { return certificateDict(certifyMonotoneCurvature(curve, relTol)); },
       "curve"_a, "rel_tol"_a = 1e-12, "The exact monotonicity certificate of a planar B-spline.");
+
+  m.def(
+      "certify_space_curvature",
+      [](const BSplineCurve& curve, double relTol) {
+        return spaceCertificateDict(certifySpaceCurvature(curve, relTol));
+      },
+      "curve"_a, "rel_tol"_a = 1e-12,
+      "The exact certificate of monotone curvature of a space B-spline (sign of d(kappa^2)/dt in Bernstein form), "
+      "with its curvature extrema and torsion sign changes.");
 
   m.def("curvature_variation", &curvatureVariation, "curve"_a,
         "L^3 * integral (dkappa/ds)^2 ds of a planar B-spline (0 for lines and circles).");

@@ -15,4 +15,5 @@ void bindSurfaceAnalysis(pybind11::module_& m);
 
 /// A MonotonicityCertificate as the dict the Python layer reads (bind_monotone.cpp).
 pybind11::dict certificateDict(const MonotonicityCertificate& certificate);
+pybind11::dict spaceCertificateDict(const SpaceCurvatureCertificate& certificate);
 }  // namespace fairsplines::python

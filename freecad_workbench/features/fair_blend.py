@@ -1,6 +1,8 @@
-"""The Fair blend: a parametric planar cubic B-spline whose curvature is monotone, proved by
-the exact certificate, that bridges two edges' end points with their tangents (G1) and
-curvatures (G2, the default), or two vertices with given directions (and curvatures).
+"""The Fair blend: a parametric cubic B-spline whose curvature is monotone, proved by the
+exact certificate, that bridges two edges' end points with their tangents (G1) and
+curvatures (G2, the default), or two vertices with given directions (and curvatures). Planar
+where the ends share a plane; where they do not, the fair blend in space
+(fw.fair_blend_space_solution, issue 28), G2 to the edges' curvature vectors.
 Headless; a view provider is attached only when FreeCAD.GuiUp.
 
     from freecad_workbench.features.fair_blend import make_fair_blend
@@ -32,7 +34,14 @@ import numpy as np
 import Part
 
 from ..errors import InputError
-from ..fair_blend import CONTINUITIES, METHODS, edge_end, fair_blend_solution
+from ..fair_blend import (
+    CONTINUITIES,
+    METHODS,
+    curvature_vector,
+    edge_end,
+    fair_blend_solution,
+    fair_blend_space_solution,
+)
 from ..kernel import as_vector
 from ..monotone import check_monotone_curvature, monotone_curvature_solution
 from .base import FeatureProxy, attach_view_provider, set_if_changed
@@ -94,7 +103,11 @@ class FairBlend(FeatureProxy):
             set_if_changed(obj, "Curvature", check_monotone_curvature(curve).summary)
             return curve.toShape()
         g2 = obj.Continuity == "G2"
-        curve, report = fair_blend_solution(p0, t0, p1, t1, k0 if g2 else None, k1 if g2 else None, normal)
+        space = space_ends(obj, g2)
+        if space is not None:  # the ends do not share a plane: the fair blend in space
+            curve, report = fair_blend_space_solution(*space)
+        else:
+            curve, report = fair_blend_solution(p0, t0, p1, t1, k0 if g2 else None, k1 if g2 else None, normal)
         set_if_changed(obj, "Curvature", report.certificate.summary)
         if not report.monotone:
             # the kernel's why, then the verdict on the curve shown in a designer's words
@@ -176,6 +189,40 @@ def blend_ends(obj):
     tangents as FreeCAD.Vectors, curvatures signed about the plane normal (+Z in the XY plane,
     else the normal of the plane of the chord and the tangents; None where everything lies
     on one line, for the kernel to choose)."""
+    p0, t0, p1, t1, ends = _blend_sides(obj)
+    normal = _blend_normal(p0, t0, p1, t1)
+    k0 = _curvature(ends[0], normal) if ends[0] else obj.StartCurvature
+    k1 = _curvature(ends[1], normal) if ends[1] else obj.EndCurvature
+    return p0, t0, p1, t1, k0, k1, normal
+
+
+def space_ends(obj, g2):
+    """(p0, t0, p1, t1[, K0, K1]) for fair_blend_space_solution where the ends do not lie in
+    one plane (the chord and tangents, and for G2 the edges' curvature vectors, within 1e-9);
+    None where they do (the planar blend, as before). A vertex end has no curvature vector:
+    G2 in space needs edges at both ends."""
+    p0, t0, p1, t1, ends = _blend_sides(obj)
+    normal = _blend_normal(p0, t0, p1, t1)
+    vectors = [np.array(p1 - p0), np.array(t0), np.array(t1)]
+    if g2:
+        vectors += [curvature_vector(e) for e in ends if e is not None]
+    if normal is not None:
+        n = np.array(normal)
+        if all(abs(float(np.dot(v, n))) <= 1e-9 * max(np.linalg.norm(v), 1e-300) for v in vectors):
+            return None
+    elif not g2 or all(e is not None and np.linalg.norm(curvature_vector(e)) == 0.0 for e in ends):
+        return None  # all on one line
+    points = (np.array(p0), np.array(t0), np.array(p1), np.array(t1))
+    if not g2:
+        return points
+    if ends[0] is None or ends[1] is None:
+        raise InputError("these ends do not lie in one plane: a G2 blend in space needs edges at both ends "
+                         "(a vertex end gives no curvature vector); use G1, or pick edges")
+    return points + (curvature_vector(ends[0]), curvature_vector(ends[1]))
+
+
+def _blend_sides(obj):
+    """(p0, t0, p1, t1, [EdgeEnd or None, EdgeEnd or None]) of a Fair blend's properties."""
     start = _element(obj.Start, "Start")
     end = _element(obj.End, "End")
     # Where each side is, for "auto": a vertex is a point, an edge the nearer of its ends.
@@ -188,10 +235,7 @@ def blend_ends(obj):
     t1 = end_tangent(end, which1, outwards=False) if which1 else obj.EndDirection
     ends = [edge_end(start, _END_NAME[which0], True, "Start") if which0 else None,
             edge_end(end, _END_NAME[which1], False, "End") if which1 else None]
-    normal = _blend_normal(p0, t0, p1, t1)
-    k0 = _curvature(ends[0], normal) if ends[0] else obj.StartCurvature
-    k1 = _curvature(ends[1], normal) if ends[1] else obj.EndCurvature
-    return p0, t0, p1, t1, k0, k1, normal
+    return p0, t0, p1, t1, ends
 
 
 _END_NAME = {"first": "start", "last": "end"}

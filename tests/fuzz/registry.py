@@ -122,6 +122,8 @@ register("monotone_curvature_spline", ENDS, valid=GOOD_ENDS,
                      method=S.choice_arg("fair", "paper", "grid")), examples=25)
 register("fair_blend_solution", ENDS, valid=GOOD_ENDS,
          kwargs=dict(k0=curvature, k1=curvature, normal=st.one_of(st.none(), S.vector_arg)), examples=25)
+register("fair_blend_space_solution", [S.vector_arg] * 4, valid=GOOD_ENDS,
+         kwargs=dict(K0=st.one_of(st.none(), S.vector_arg), K1=st.one_of(st.none(), S.vector_arg)), examples=25)
 END = st.one_of(S.choice_arg("start", "end"), S.vector_arg)
 register("fair_blend", [S.curve_arg, END, S.curve_arg, END], valid=[S.curve_arg, S.choice_arg("start", "end")] * 2,
          kwargs=dict(continuity=S.choice_arg("G2", "G1")), examples=25)

@@ -151,7 +151,9 @@ def test_a_3d_plane_and_a_mirror_image_are_solved_alike():
         (((0, 0, 0), (1, 0, 0), (0, 0, 0), (1, 0, 0)), "p0 and p1 coincide"),
         (((0, 0, 0), (0, 0, 0), (1, 0, 0), (1, 0, 0)), "start tangent t0 is zero"),
         (((0, 0, 0), (1, 0, 0), (1, 1, 0), (math.nan, 0, 0)), "not finite"),
-        (((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 0, 1)), "leaves the blend's plane"),
+        # With a plane normal the ends must lie in that plane (without one, ends in space get
+        # the fair blend in space: tests/kernel/test_fair_blend_space.py).
+        (((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 0, 1), None, None, (0, 0, 1)), "leaves the blend's plane"),
     ],
 )
 def test_bad_ends_raise_input_error_naming_the_problem(args, message):

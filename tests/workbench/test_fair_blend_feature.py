@@ -174,3 +174,36 @@ def test_factory_rejects_unknown_continuity(doc, line_and_arc):
     lead, arc = line_and_arc
     with pytest.raises(fw.InputError, match="continuity"):
         make_fair_blend(doc, (lead, "Edge1"), (arc, "Edge1"), continuity="G3")
+
+
+def test_edges_of_two_solids_in_space_get_a_g2_blend_in_space(doc):
+    """Issue 28: two edges of 3D models that share no plane (circles of two skew cylinders)
+    are blended in space, G2 to OCCT's curvature vectors of the edges; the feature is ok."""
+    a = doc.addObject("Part::Cylinder", "A")
+    a.Radius, a.Height = 2.0, 5.0
+    b = doc.addObject("Part::Cylinder", "B")
+    b.Radius, b.Height = 1.5, 4.0
+    b.Placement = FreeCAD.Placement(V(9, 3, 2), FreeCAD.Rotation(V(1, -1, 0.2), 70))
+    doc.recompute()
+
+    def circle(obj, top):
+        edges = [(i, e) for i, e in enumerate(obj.Shape.Edges) if isinstance(e.Curve, Part.Circle)]
+        i, _ = max(edges, key=lambda ie: ie[1].Curve.Center.z) if top else edges[0]
+        return f"Edge{i + 1}"
+
+    blend = make_fair_blend(doc, (a, circle(a, True)), (b, circle(b, False)))
+    assert blend.Status == "ok" or blend.Status.startswith("warning:")
+    curve = blend.Shape.Edges[0].Curve
+    edge_a = a.Shape.getElement(circle(a, True))
+    u0, u1 = curve.FirstParameter, curve.LastParameter
+    nearest = min((edge_a.FirstParameter, edge_a.LastParameter),
+                  key=lambda u: (edge_a.valueAt(u) - curve.value(u0)).Length)
+    assert (edge_a.valueAt(nearest) - curve.value(u0)).Length <= 1e-9 * 10
+    d1, d2 = (np.array(v) for v in curve.getD2(u0)[1:3])
+    k_blend = np.cross(np.cross(d1, d2), d1) / np.linalg.norm(d1) ** 4
+    e1, e2 = np.array(edge_a.derivative1At(nearest)), np.array(edge_a.derivative2At(nearest))
+    k_edge = np.cross(np.cross(e1, e2), e1) / np.linalg.norm(e1) ** 4
+    assert np.linalg.norm(k_blend - k_edge) <= 1e-6 * np.linalg.norm(k_edge)
+    edge_b = b.Shape.getElement(circle(b, False))
+    assert min((edge_b.valueAt(u) - curve.value(u1)).Length for u in (edge_b.FirstParameter, edge_b.LastParameter)) \
+        <= 1e-9 * 20

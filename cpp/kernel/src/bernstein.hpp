@@ -34,6 +34,27 @@ Eigen::VectorXd product(const Eigen::VectorXd& a, const Eigen::VectorXd& b);
 PointMatrix composeQuadratic(const PointMatrix& quadratic, const Eigen::VectorXd& rbar, const Eigen::VectorXd& rlow);
 
 // ---------------------------------------------------------------------------------------
+// Signs of a scalar polynomial on [0, 1] (the monotone certificates, planar and space)
+
+/// Result of trying to certify a(t) >= -tol on [0, 1] by coefficients and subdivision.
+struct Bound {
+  bool holds = true;
+  bool undecided = false;
+  double witness = 0.0;  ///< where a(witness) < -tol (a certified violation), or the undecided spot
+  int pieces = 0;
+};
+
+constexpr int kMaxDepth = 48;
+constexpr int kMaxPieces = 20000;
+
+/// a(t) >= -tol on [0, 1]? Decided by the Bernstein coefficients (convex hull), with
+/// subdivision at 1/2 where they disagree, down to kMaxDepth levels and kMaxPieces pieces.
+Bound certifyLower(const Eigen::VectorXd& a, double tol);
+
+/// A root of a between t0 and t1 (a(t0), a(t1) of opposite signs), by bisection.
+double bisectRoot(const Eigen::VectorXd& a, double t0, double t1);
+
+// ---------------------------------------------------------------------------------------
 // de Casteljau
 
 /// The value at t of the Bézier rows b (de Casteljau: b_i <- (1 - t) b_i + t b_{i+1}).

@@ -47,61 +47,10 @@ Poly add(const Poly& a, const Poly& b) { return sub(a, -b); }
 
 double eval(const Poly& a, double t) { return bernstein::value(a, t)[0]; }
 
-/// Result of trying to certify a(t) >= -tol on [0, 1] by coefficients and subdivision.
-struct Bound {
-  bool holds = true;
-  bool undecided = false;
-  double witness = 0.0;  ///< where a(witness) < -tol (a certified violation), or the undecided spot
-  int pieces = 0;
-};
-
-constexpr int kMaxDepth = 48;
-constexpr int kMaxPieces = 20000;
-
-void certifyLower(const Poly& a, double lo, double hi, double tol, int depth, Bound& out) {
-  if (!out.holds || out.undecided) return;
-  const Eigen::Index n = a.size() - 1;
-  if (a.minCoeff() >= -tol) {
-    ++out.pieces;
-    return;
-  }
-  if (a[0] < -tol || a[n] < -tol) {  // an end coefficient is the exact value there
-    out.holds = false;
-    out.witness = a[0] < -tol ? lo : hi;
-    return;
-  }
-  if (depth >= kMaxDepth || out.pieces >= kMaxPieces) {
-    out.undecided = true;
-    out.witness = 0.5 * (lo + hi);
-    return;
-  }
-  Poly left, right;
-  bernstein::split(a, 0.5, left, right);  // de Casteljau at 1/2: the two halves
-  const double mid = 0.5 * (lo + hi);
-  certifyLower(left, lo, mid, tol, depth + 1, out);
-  certifyLower(right, mid, hi, tol, depth + 1, out);
-}
-
-Bound certifyLower(const Poly& a, double tol) {
-  Bound out;
-  certifyLower(a, 0.0, 1.0, tol, 0, out);
-  return out;
-}
-
-/// A root of a between t0 and t1 (a(t0), a(t1) of opposite signs), by bisection.
-double bisectRoot(const Poly& a, double t0, double t1) {
-  double f0 = eval(a, t0);
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (t0 + t1), fm = eval(a, mid);
-    if ((fm < 0) == (f0 < 0)) {
-      t0 = mid;
-      f0 = fm;
-    } else {
-      t1 = mid;
-    }
-  }
-  return 0.5 * (t0 + t1);
-}
+using bernstein::bisectRoot;
+using bernstein::Bound;
+using bernstein::certifyLower;
+using bernstein::kMaxDepth;
 
 // ---------------------------------------------------------------------------------------
 // Planar Bezier arcs of a B-spline, and the certificate on them.

@@ -66,4 +66,46 @@ struct FairBlend {
 /// k1, or curvatures with data outside the XY plane and no normal.
 FairBlend fairBlend(const BlendEnds& ends);
 
+// ---------------------------------------------------------------------------------------
+// Fair blends in space (issue 28; src/fair_blend_space.cpp, docs/FAIR_BLENDS.md sections 8-10)
+
+/// The ends of a blend in space: points, tangent directions and (G2) curvature vectors
+/// kappa N, as OCCT evaluates an edge's end ((d1 x d2) x d1 / |d1|^4). NaN curvature vectors:
+/// G1 at both ends.
+struct SpaceBlendEnds {
+  Eigen::Vector3d p0 = Eigen::Vector3d::Zero(), t0 = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d p1 = Eigen::Vector3d::UnitX(), t1 = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d K0 = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d K1 = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+};
+
+struct SpaceFairBlend {
+  BSplineCurve curve;                     ///< cubic, 3 columns, clamped, C2 inside
+  SpaceCurvatureCertificate certificate;  ///< certifySpaceCurvature(curve)
+  bool monotone = false;                  ///< the curvature is certified monotone (planar: signed, as fairBlend)
+  bool planar = false;                    ///< the ends are coplanar: fairBlend's result, in their plane
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< the plane's normal where planar
+  int curvatureExtrema = 0;                          ///< certificate.extrema.size()
+  int torsionSignChanges = 0;                        ///< certificate.torsionSignChanges.size()
+  double length = 0.0;                               ///< arc length of the guide curve followed
+  double variation = 0.0;                            ///< L^3 int (dkappa/ds)^2 ds of `curve`
+  int spans = 0;
+  std::string reason;  ///< how it was found, or why it is not monotone
+};
+
+/// The fair blend of two ends anywhere in space, never NaN geometry.
+/// - Coplanar ends (the chord, tangents and curvature vectors in one plane to 1e-12) are
+///   fairBlend's, in that plane: the planar result.
+/// - Otherwise the C2 cubic that follows a space spiral (space_spiral.hpp): curvature a cubic
+///   of arc length (linear for G1), torsion quadratic (linear for G1), solved for the ends;
+///   of the solutions found, monotone curvature first, then the fewest torsion sign changes,
+///   then the least variation. Spans are halved until certifySpaceCurvature proves the cubic's
+///   curvature monotone where the spiral's is. Points and tangents are exact (first and last
+///   poles, neighbours on the tangent lines); G2 curvature vectors to rounding (the third
+///   poles are placed for them).
+/// Where nothing monotone is found, `monotone` is false and `reason` says why.
+/// Throws InputError on non-finite input, zero tangents, coincident points, only one of the
+/// curvature vectors, a curvature vector along its tangent, or a solve past its work budget.
+SpaceFairBlend fairBlendSpace(const SpaceBlendEnds& ends);
+
 }  // namespace fairsplines

@@ -8,6 +8,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <string>
+#include <tuple>
 #include <vector>
 #include "fairsplines/errors.hpp"
 #include "fairsplines/types.hpp"
@@ -204,6 +205,52 @@ struct MonotonicityCertificate {
 /// Throws InputError for an invalid curve, a curve that does not move, a non-planar curve,
 /// non-positive weights, or curvatures beyond double precision.
 MonotonicityCertificate certifyMonotoneCurvature(const BSplineCurve& curve, double relTol = 1e-12);
+
+// ---------------------------------------------------------------------------------------
+// Space curves (issue 28; src/monotone_space.cpp, docs/FAIR_BLENDS.md section 8)
+
+struct SpaceSpanCertificate {
+  double u0 = 0.0, u1 = 0.0;                         ///< parameter range of the span
+  double kappa0 = 0.0, kappa1 = 0.0;                 ///< curvature (>= 0) at its ends
+  CurvatureTrend trend = CurvatureTrend::Undecided;  ///< of kappa (equivalently kappa^2)
+  int degree = 0;                                    ///< degree of the Bernstein form of N
+  double at = 0.0;                                   ///< Extremum: its parameter; Singular/Undecided: where
+  double kappaAt = 0.0;                              ///< Extremum: curvature there
+  bool maximum = false;                              ///< Extremum: a maximum (else a minimum)
+  int torsionSign = 0;                 ///< +1 / -1: det(c', c'', c''') of one sign on the span; 0: zero (a planar span)
+  std::vector<double> torsionChanges;  ///< where the torsion changes sign inside the span (rational spans)
+  std::string reason;
+};
+
+struct SpaceCurvatureCertificate {
+  bool monotone = false;    ///< kappa certified monotone along the whole curve
+  bool increasing = false;  ///< kappa nondecreasing (both: constant)
+  bool decreasing = false;
+  bool planar = false;  ///< every span's torsion numerator vanishes (within rounding)
+  double kappaStart = 0.0, kappaEnd = 0.0;
+  std::vector<SpaceSpanCertificate> spans;
+  /// Curvature extrema (u, kappa, is_maximum): inside spans, and at knots where the spans on
+  /// the two sides run opposite ways.
+  std::vector<std::tuple<double, double, bool>> extrema;
+  /// Parameters where the sign of the torsion changes (inside spans, or at the knot between
+  /// spans of opposite signs; planar spans between them carry no sign).
+  std::vector<double> torsionSignChanges;
+  std::string reason;
+};
+
+/// Exact certificate of monotone curvature for a space B-spline (3 columns, or 2 read as
+/// z = 0), polynomial or rational, per span. kappa^2 = |c' x c''|^2 / |c'|^6, so
+///   sign d(kappa^2)/dt = sign N,  N = 2 (c' x c'').(c' x c''') |c'|^2 - 6 |c' x c''|^2 (c'.c'')
+/// for a polynomial span (degree 7 for a cubic: c' x c'' has degree 2, not 3), and for a
+/// rational span with homogeneous numerator X, weight W, B = X' W - X W', D = B x B':
+///   N = 2 W (D.(B x B'')) |B|^2 + 4 W' |D|^2 |B|^2 - 6 W |D|^2 (B.B')
+/// (docs/FAIR_BLENDS.md section 8). N is formed exactly in Bernstein form (bernstein.hpp) and
+/// signed by its coefficients with subdivision, with the tolerance policy of
+/// certifyMonotoneCurvature. The torsion's sign is that of det(B, B', B'') (det(c', c'', c'''),
+/// constant on a polynomial cubic span), signed the same way. Scale-invariant.
+/// Throws InputError for an invalid curve, a curve that does not move, non-positive weights,
+/// or curvatures beyond double precision.
+SpaceCurvatureCertificate certifySpaceCurvature(const BSplineCurve& curve, double relTol = 1e-12);
 
 /// Scale-free curvature variation L^3 * integral (dkappa/ds)^2 ds (Gauss quadrature, 16 points
 /// per span): 0 for lines and circles. A fairness measure used to compare solvers.
