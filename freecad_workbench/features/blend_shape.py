@@ -316,6 +316,10 @@ def _profile_part(obj, fractions, placement, link=None):
             profile.transform(placement.toMatrix())
     a, b = profile.FirstParameter, profile.LastParameter
     t = [a + f * (b - a) for f in fractions]
+    # A fraction a rounding error from a knot is that knot (no row or end piece of no length).
+    knots = profile.getKnots() if hasattr(profile, "getKnots") else []
+    t = [min(knots, key=lambda k: abs(k - x)) if knots and min(abs(k - x) for k in knots) <= 1e-9 * (b - a) else x
+         for x in t]
     if t[0] > a or t[-1] < b:
         profile = profile.copy()
         profile.segment(t[0], t[-1])

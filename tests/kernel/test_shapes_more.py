@@ -333,3 +333,16 @@ def test_a_sketch_like_profile_of_several_edges_is_joined_and_revolved():
     with pytest.raises(fw.InputError, match="connected wire"):
         far = Part.LineSegment(FreeCAD.Vector(5, 0, 5), FreeCAD.Vector(5, 0, 6)).toShape()
         fw.shapes.Revolution(Part.Compound([line, far]), (0, 0, 0), (0, 0, 1), NON_UNIFORM)
+
+
+def test_a_split_a_rounding_error_from_a_profile_knot_adds_no_row():
+    # A third of a Design spline's range (0 .. 2.999999999999999 on knots 0.2 apart) came out
+    # as 0.9999999999999997 beside its knot 1.0: a row of no length, a patch side collapsed.
+    curve, _ = _design_profile()
+    angles = [0.0, 2.0, 4.0, 2 * math.pi]
+    plain = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), angles)
+    knot = float(plain.profile.knots[2])
+    near = np.nextafter(np.nextafter(knot, -np.inf), -np.inf)
+    split = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), angles, [near])
+    assert list(split.profile.knots) == list(plain.profile.knots)
+    assert fw.blend_basic_shape(split, at="end").shell.isValid()
