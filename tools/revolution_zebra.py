@@ -1,6 +1,7 @@
 """The README's blending picture (issue 32): a profile designed with basic curves (a line, a
 circle arc and an ellipse arc in a sketch, joined by a Design spline: each conic kept exact),
-revolved exactly and blended C2 into a free-form ring by a Blend basic shape, in zebra
+revolved exactly and blended C2 into a free-form ring (a bicubic B-spline face picked as the
+free-form side) by a Blend basic shape, in zebra
 shading, with the Blend basic shape panel open (its Profile picked from the Design spline).
 The whole main window at its default layout. Run under a virtual display:
 
@@ -30,15 +31,35 @@ def revolved_design(doc):
     V = FreeCAD.Vector
     sketch = doc.addObject("Sketcher::SketchObject", "Profile")
     sketch.Placement = FreeCAD.Placement(V(), FreeCAD.Rotation(V(1, 0, 0), 90))  # (x, y) -> (x, 0, y)
-    sketch.addGeometry(Part.LineSegment(V(4, 0, 0), V(4, 3, 0)))  # a stem
-    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(6, 3, 0), V(0, 0, 1), 2), math.pi / 2, math.pi))  # a fillet
-    ellipse = Part.Ellipse(V(6, 6, 0), 3, 1)  # a flat bowl: semi-axes 3 across, 1 up
-    sketch.addGeometry(Part.ArcOfEllipse(ellipse, -math.pi / 2, 0.0))
+    # From the bottom up: a bulge (an ellipse arc, semi-axes 4 up and 2 across), a fillet (a
+    # quarter circle) into a neck (a line), which the ring continues.
+    sketch.addGeometry(Part.LineSegment(V(4, 6, 0), V(4, 9, 0)))  # the neck
+    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(6, 6, 0), V(0, 0, 1), 2), math.pi, 1.5 * math.pi))
+    ellipse = Part.Ellipse(V(6, 4, 0), V(4, 0, 0), V(6, 0, 0))  # centre (6, 0), major axis up
+    sketch.addGeometry(Part.ArcOfEllipse(ellipse, -math.pi / 2, 0.0))  # from (8, 0) up to (6, 4)
     doc.recompute()
-    design = make_design_spline(doc, [((sketch, f"Edge{i}"), None) for i in (1, 2, 3)])
-    blend = make_blend_shape(doc, "Revolution", profile=design, AroundCount=8, ProfileCount=6)
-    sketch.ViewObject.Visibility = False
+    design = make_design_spline(doc, [((sketch, f"Edge{i}"), None) for i in (3, 2, 1)])  # ends with the neck
+    ring = doc.addObject("Part::Feature", "Ring")  # a free-form ring above the neck: bicubic, periodic
+    ring.Shape = Part.Face(free_form_ring(4.0, 10.0, 1.0))
+    blend = make_blend_shape(doc, "Revolution", profile=design, freeform=(ring, "Face1"), AroundCount=8,
+                             ProfileCount=6)
+    for hidden in (sketch, ring):
+        hidden.ViewObject.Visibility = False
     return sketch, design, blend
+
+
+def free_form_ring(radius, z0, step, arcs=8):
+    """A bicubic B-spline ring around the Z axis, periodic around it, 4 rows from z0 up by
+    `step`: its surface at `radius` (the poles' polygon pushed out by the cubic's shrink)."""
+    import Part
+
+    shrink = (2 + math.cos(2 * math.pi / arcs)) / 3  # a periodic cubic of a regular polygon's poles, at a pole
+    rows = [[FreeCAD.Vector(radius / shrink * math.cos(a), radius / shrink * math.sin(a), z0 + step * j)
+             for j in range(4)] for a in (2 * math.pi * i / arcs for i in range(arcs))]
+    surface = Part.BSplineSurface()
+    surface.buildFromPolesMultsKnots(rows, [1] * (arcs + 1), [4, 4], [float(k) for k in range(arcs + 1)],
+                                     [0.0, 1.0], True, False, 3, 3)
+    return surface
 
 
 def main(out):
@@ -52,8 +73,13 @@ def main(out):
     assert blend.Status == "ok", blend.Status
     FreeCADGui.Selection.clearSelection()
     edit(blend)
+    view = FreeCADGui.ActiveDocument.ActiveView
+    # from the side, a little above: the stem, the fillet, the bowl and the ring beyond it
+    view.setCameraOrientation(FreeCAD.Rotation(FreeCAD.Vector(0, 0, 1), 25).multiply(
+        FreeCAD.Rotation(FreeCAD.Vector(1, 0, 0), 68)))
+    FreeCADGui.getMainWindow().statusBar().clearMessage()
     settle()
-    grab(out, "revolution_zebra", "viewIsometric")
+    grab(out, "revolution_zebra", "fitAll")
     FreeCAD.closeDocument(doc.Name)
     settle()
 

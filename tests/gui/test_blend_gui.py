@@ -427,6 +427,7 @@ def test_panel_takes_the_selected_sketch_as_the_revolution_profile(scene):
     assert panel.profile_box.isHidden()  # a sphere zone has no profile to pick
     panel.set_kind("Revolution")
     assert not panel.profile_box.isHidden() and "Default parabola" in panel.profile_label.text()
+    assert panel.widgets["ProfileEnd"].text() == "1"  # a fraction of the profile's range, not "1 mm"
     sel = gui().Selection
     sel.clearSelection()
     panel.use_profile.click()  # nothing selected: a message, nothing changed

@@ -225,7 +225,8 @@ class BlendShapePanel(LiveEditPanel):
             self.dimensions.removeRow(0)
         self.widgets = {}
         kind = self.obj.Kind
-        profile_suffix = " °" if PROFILE_IN_DEGREES[kind] else " mm"
+        # degrees, lengths, or (Revolution) fractions of the profile's range: no unit
+        profile_suffix = " °" if PROFILE_IN_DEGREES[kind] else "" if kind == "Revolution" else " mm"
         names = list(KIND_LENGTHS[kind])
         names += ["AroundCount", "ProfileCount", "ProfileStart", "ProfileEnd"] if self.obj.Uniform else list(
             KIND_LISTS[kind])
