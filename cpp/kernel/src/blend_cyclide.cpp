@@ -138,8 +138,9 @@ BlendComplex blendCyclide(const ShapeFrame& frame, double a, double c, double mu
     for (int i = 0; i < n; ++i) {
       const double spread = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(spread));
       const Eigen::RowVector3d p1(f * std::cos(lon.theta[i]), f * std::sin(lon.theta[i]), 1.0);
-      row.row(i) = inFrame(frame, cyclidePoint(a, b, c, mu, p1, q));
-      if (!(row(i, 3) > 0)) throw InputError("the cyclide's default ring has a weight that is not positive");
+      // row i + 2: the ring's span k between longitudes k and k + 1 (see defaultRing)
+      row.row((i + 2) % n) = inFrame(frame, cyclidePoint(a, b, c, mu, p1, q));
+      if (!(row((i + 2) % n, 3) > 0)) throw InputError("the cyclide's default ring has a weight that is not positive");
     }
     const BSplineCurve layout = periodicCubic(row, T);
     for (int i = 0; i < n; ++i) {
