@@ -54,8 +54,10 @@ def free_form_ring(radius, z0, step, arcs=8):
     import Part
 
     shrink = (2 + math.cos(2 * math.pi / arcs)) / 3  # a periodic cubic of a regular polygon's poles, at a pole
+    # pole i at the angle of arc i - 1: OCCT's periodic span [i, i + 1] then lies over arc i,
+    # the shape's arc the strip joins it to
     rows = [[FreeCAD.Vector(radius / shrink * math.cos(a), radius / shrink * math.sin(a), z0 + step * j)
-             for j in range(4)] for a in (2 * math.pi * i / arcs for i in range(arcs))]
+             for j in range(4)] for a in (2 * math.pi * (i - 1) / arcs for i in range(arcs))]
     surface = Part.BSplineSurface()
     surface.buildFromPolesMultsKnots(rows, [1] * (arcs + 1), [4, 4], [float(k) for k in range(arcs + 1)],
                                      [0.0, 1.0], True, False, 3, 3)
