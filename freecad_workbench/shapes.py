@@ -522,8 +522,8 @@ class DupinCyclide(_Shape):
     the torus of radii a and mu). Both families of curvature lines are circles, partitioned by
     angles_u and angles_v (radians, as a torus's): the G2 bicubic patches are exact.
     fw.blend_basic_shape(cyclide) joins it C2 at its last v angle to its default ring (a
-    full turn of angles_u); C1, the naive baseline, user rings, joins and chains are not
-    built for cyclides (docs/READINGS.md)."""
+    full turn of angles_u), and the naive baseline (fw.blend_naive, Fig. 2a) to the same ring;
+    C1, user rings, joins and chains are not built for cyclides (docs/READINGS.md)."""
 
     def __init__(self, center: VectorLike, a: float, c: float, mu: float, angles_u: Sequence[float],
                  angles_v: Sequence[float], axis: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
@@ -543,7 +543,8 @@ class DupinCyclide(_Shape):
 
     def _revolution(self):
         raise InputError("a Dupin cyclide is not a surface of revolution: it blends C2 to its default ring only "
-                         "(fw.blend_basic_shape(cyclide)), not in joins, chains, C1 or the naive baseline")
+                         "(fw.blend_basic_shape(cyclide), or fw.blend_naive(cyclide) to compare), not in joins, "
+                         "chains, C1 or to a user's ring")
 
 
 # What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).

@@ -281,6 +281,15 @@ def test_dupin_cyclide_is_exact_g2_and_blends_c2_into_its_ring():
     assert result.shell.isValid()
     with pytest.raises(fw.InputError, match="not a surface of revolution"):
         fw.blend_basic_shape(cyclide, continuity="C1")
+    # The naive baseline of Fig. 2a to the same ring: the cyclide's own G2 patches, exact; a
+    # valid shell; no single C2 surface (the arcs differ).
+    naive = fw.blend_naive(cyclide)
+    assert naive.surface is None and naive.shell.isValid()
+    assert [role for role, _ in naive.patches].count("transition") == 7
+    assert max(_cyclide_implicit(p, a, c, mu) for s in basic(naive) for p in samples(s, 6)) < 1e-12
+    assert [role for role, _ in naive.patches].count("freeform") == 7  # the ring on the sigma knots: one per arc
+    with pytest.raises(fw.InputError, match="not a surface of revolution"):
+        fw.blend_naive(cyclide, continuity="C1")
     with pytest.raises(fw.InputError, match="no real surface"):
         fw.shapes.DupinCyclide(CENTER, 1.0, 2.0, 1.5, NON_UNIFORM, angles_v)
     with pytest.raises(fw.InputError, match="not a ring cyclide"):
