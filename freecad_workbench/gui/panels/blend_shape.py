@@ -1,4 +1,5 @@
-"""Task panel of a Blend basic shape: kind, dimensions, the partitions (uniform counts and
+"""Task panel of a Blend basic shape: kind, a Revolution's profile (taken from the selection:
+a sketch, a Design spline or edges), dimensions, the partitions (uniform counts and
 range, or the lists as comma-separated values), how the strip is parametrised, the
 continuity and the free-form side. Every change recomputes at once; OK keeps the changes
 as one undo step, Cancel restores."""
