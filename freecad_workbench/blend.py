@@ -179,10 +179,14 @@ def blend_naive(shape: BasicShape, freeform: Optional[SurfaceLike] = None, conti
     the partition's beta do not match: its .surface is None. continuity "C1": the G1
     shape's arcs split and degree-raised without eta, the same (4,2) double strip."""
     _check(shape, continuity, "rho")
-    _revolving(shape)
     if shape.edited:
         raise InputError("the naive baseline takes the unedited shape (call shape.reset_control())")
     shape, freeform, image = _through_base(shape, freeform)
+    if isinstance(shape, DupinCyclide) and continuity == "C2" and freeform is None and at in (None, "end"):
+        return blend_result(_mapped(image, kernel.blend_cyclide_naive(*shape._frame_args(), shape.a, shape.c,
+                                                                      shape.mu, shape.angles_u, shape.angles_v)),
+                            single=False)
+    _revolving(shape)
     if continuity == "C1":
         if image is not None:
             complex_ = complex_c1(shape, freeform, None, naive=True, at=_interface(shape, at))

@@ -122,6 +122,7 @@ blend_edited = _kernel.blend_edited
 join_shapes = _kernel.join_shapes
 blend_shape = _kernel.blend_shape
 blend_cyclide = _kernel.blend_cyclide
+blend_cyclide_naive = _kernel.blend_cyclide_naive
 image_complex = _kernel.image_complex
 ring_knots_c1 = _kernel.ring_knots_c1
 blend_c1 = _kernel.blend_c1

@@ -250,6 +250,17 @@ def _profile_curve(profile):
     return kernel.from_part(profile)
 
 
+def _new_splits(curve, splits):
+    """The splits that are not a knot of the profile already (a row boundary): a split a
+    rounding error (1e-9 of the parameter range) from a knot would make a row of no length,
+    e.g. a third of a Design spline's range, 1.0 against its knot 0.9999999999999999."""
+    knots = np.asarray(curve.knots, dtype=float)
+    if len(splits) == 0 or len(knots) == 0:
+        return splits
+    tolerance = 1e-9 * max(knots[-1] - knots[0], 1e-300)
+    return np.array([t for t in splits if np.abs(knots - t).min() > tolerance], dtype=float)
+
+
 def joined_profile(shape: Any) -> Any:
     """The Part.BSplineCurve of a shape's edges joined end to end in the order of their wire
     (one edge: its exact B-spline). InputError if they do not form one connected wire."""
@@ -290,7 +301,9 @@ class Revolution(_Shape):
                  splits: Optional[Sequence[float]] = None) -> None:
         self._control = None
         splits = np.zeros(0) if splits is None else _angles(splits, "splits")
-        self.profile = kernel.revolution_profile(_profile_curve(profile), _vector3(center, "center"),
+        curve = _profile_curve(profile)
+        splits = _new_splits(curve, splits)
+        self.profile = kernel.revolution_profile(curve, _vector3(center, "center"),
                                                  _vector3(axis, "axis"), splits)
         self.center = np.array(self.profile.origin, dtype=float)
         self.x_axis, self.y_axis = np.array(self.profile.x, dtype=float), np.array(self.profile.y, dtype=float)
@@ -516,8 +529,8 @@ class DupinCyclide(_Shape):
     the torus of radii a and mu). Both families of curvature lines are circles, partitioned by
     angles_u and angles_v (radians, as a torus's): the G2 bicubic patches are exact.
     fw.blend_basic_shape(cyclide) joins it C2 at its last v angle to its default ring (a
-    full turn of angles_u); C1, the naive baseline, user rings, joins and chains are not
-    built for cyclides (docs/READINGS.md)."""
+    full turn of angles_u), and the naive baseline (fw.blend_naive, Fig. 2a) to the same ring;
+    C1, user rings, joins and chains are not built for cyclides (docs/READINGS.md)."""
 
     def __init__(self, center: VectorLike, a: float, c: float, mu: float, angles_u: Sequence[float],
                  angles_v: Sequence[float], axis: VectorLike = (0, 0, 1), x_axis: Optional[VectorLike] = None) -> None:
@@ -537,7 +550,8 @@ class DupinCyclide(_Shape):
 
     def _revolution(self):
         raise InputError("a Dupin cyclide is not a surface of revolution: it blends C2 to its default ring only "
-                         "(fw.blend_basic_shape(cyclide)), not in joins, chains, C1 or the naive baseline")
+                         "(fw.blend_basic_shape(cyclide), or fw.blend_naive(cyclide) to compare), not in joins, "
+                         "chains, C1 or to a user's ring")
 
 
 # What the blends take (fw.blend_basic_shape, fw.join_basic_shapes).

@@ -39,6 +39,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>A sketch, a Design spline or edges, in a plane through the shape&apos;s axis and off the axis; revolved around the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Add a mark in the middle of the widest gap</source>
         <translation type="unfinished"></translation>
@@ -182,6 +187,16 @@
     <message>
         <location filename="../freecad_workbench/features/blend_shape.py"/>
         <source>Cylinder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Default parabola</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Default parabola (no profile picked)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -502,12 +517,22 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Profile fractions</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Profile from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Profile not taken: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -584,6 +609,11 @@
     <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Scale factor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Select a sketch, a Design spline or edges first</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -715,6 +745,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Use selected face at the start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <source>Use selected profile</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

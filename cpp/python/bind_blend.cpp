@@ -176,6 +176,14 @@ void bindBlend(py::module_& m) {
       "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a, "method"_a = "rho",
       "Section 4.2 for a Dupin ring cyclide: C2 into its default (rational) ring at the last v angle.");
 
+  m.def(
+      "blend_cyclide_naive",
+      [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double a, double c, double mu,
+         const Eigen::VectorXd& anglesU,
+         const Eigen::VectorXd& anglesV) { return blendCyclideNaive(frameOf(o, x, y), a, c, mu, anglesU, anglesV); },
+      "origin"_a, "x"_a, "y"_a, "a"_a, "c"_a, "mu"_a, "angles_u"_a, "angles_v"_a,
+      "The naive baseline of Fig. 2a for a Dupin ring cyclide: a (3,5) Hermite strip to its default ring.");
+
   py::class_<C2SexticSpline>(m, "C2SexticSpline", "Sextic pieces, C2 in homogeneous space (Section 4.1).")
       .def_readonly("bezier", &C2SexticSpline::bezier)
       .def_readonly("beta", &C2SexticSpline::beta)

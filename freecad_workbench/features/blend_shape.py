@@ -221,9 +221,10 @@ def angle_lists(obj):
     return list(getattr(obj, around)), list(getattr(obj, profile))
 
 
-def basic_shape(obj, placement=None):
+def basic_shape(obj, placement=None, trial_profile=None):
     """The fw.shapes object of obj, about the Z axis through the origin (local coordinates),
-    or moved by `placement` (a FreeCAD.Placement)."""
+    or moved by `placement` (a FreeCAD.Placement). trial_profile: a Revolution's profile link to
+    try instead of obj's Profile ((object, [edge names]), as profile_link returns)."""
     around_deg, profile = angle_lists(obj)
     if len(around_deg) < 2 or len(profile) < 2:
         raise InputError("each list needs at least 2 values")
@@ -243,7 +244,7 @@ def basic_shape(obj, placement=None):
                  x_axis=tuple(placement.Rotation.multVec(FreeCAD.Vector(1, 0, 0))))
     center = tuple(placement.Base)
     if obj.Kind == "Revolution":
-        curve, splits = _profile_part(obj, profile, placement)
+        curve, splits = _profile_part(obj, profile, placement, link=trial_profile)
         return shapes.Revolution(curve, center, frame["axis"], around, splits)
     if obj.Kind == "Sphere zone":
         return shapes.SphereZone(center, _length(obj.Radius), around, profile, **frame)
@@ -263,11 +264,33 @@ def _default_profile():
     return curve
 
 
-def _profile_part(obj, fractions, placement):
-    """(the Part curve or shape of obj's profile in the coordinates of `placement` (None:
-    obj's local ones), trimmed to the first and last fraction of its parameter range, and
-    the inner fractions as parameters to split at)."""
-    link = obj.Profile
+def profile_link(source, subs=()):
+    """The Profile link of a selection: `source` (a sketch, a Design spline, any object with
+    edges and no faces) and the names of its selected sub-elements, which must be edges.
+    Returns (source, [edge names]) (no names: all its edges); InputError names what is wrong."""
+    label = getattr(source, "Label", repr(source))
+    if not isinstance(source, FreeCAD.DocumentObject):
+        raise InputError(f"{label} is not a document object")
+    if is_blend_shape(source):
+        raise InputError(f"{label} is a Blend basic shape: pick a sketch, a Design spline or edges")
+    shape = getattr(source, "Shape", None)
+    if shape is None or shape.isNull() or not shape.Edges:
+        raise InputError(f"{label} has no edges: pick a sketch, a Design spline or edges")
+    subs = [s for s in subs if s]
+    for sub in subs:
+        if not sub.startswith("Edge"):
+            what = "a face" if sub.startswith("Face") else "a vertex" if sub.startswith("Vertex") else "not an edge"
+            raise InputError(f"{label}.{sub} is {what}: pick a sketch, a Design spline or edges")
+    if not subs and shape.Faces:
+        raise InputError(f"{label} has faces: pick some of its edges, a sketch or a Design spline")
+    return (source, subs)
+
+
+def _profile_part(obj, fractions, placement, link=None):
+    """(the Part curve or shape of obj's profile (or of `link` instead) in the coordinates of
+    `placement` (None: obj's local ones), trimmed to the first and last fraction of its
+    parameter range, and the inner fractions as parameters to split at)."""
+    link = obj.Profile if link is None else link
     if link is None or link[0] is None:
         profile = _default_profile()
     else:
@@ -293,6 +316,10 @@ def _profile_part(obj, fractions, placement):
             profile.transform(placement.toMatrix())
     a, b = profile.FirstParameter, profile.LastParameter
     t = [a + f * (b - a) for f in fractions]
+    # A fraction a rounding error from a knot is that knot (no row or end piece of no length).
+    knots = profile.getKnots() if hasattr(profile, "getKnots") else []
+    t = [min(knots, key=lambda k: abs(k - x)) if knots and min(abs(k - x) for k in knots) <= 1e-9 * (b - a) else x
+         for x in t]
     if t[0] > a or t[-1] < b:
         profile = profile.copy()
         profile.segment(t[0], t[-1])

@@ -381,3 +381,86 @@ def test_panel_joins_another_blend_shape_and_cancel_restores(scene, artifacts):
     panel.reject()
     gui().updateGui()
     assert blend.JoinTo is None and blend.Kind == "Sphere zone" and blend.Status == "ok"
+
+
+def surface_points(shape, n=4):
+    """A few points of every face's surface, face by face (OCCT's evaluation)."""
+    points = []
+    for face in shape.Faces:
+        u0, u1, v0, v1 = face.ParameterRange
+        for u in np.linspace(u0, u1, n):
+            for v in np.linspace(v0, v1, n):
+                p = face.valueAt(float(u), float(v))
+                points.append((p.x, p.y, p.z))
+    return np.array(points)
+
+
+def profile_sketch(doc):
+    """A sketch in the XZ plane: a line up from r = 4 and a tangent quarter circle outwards."""
+    import Part
+
+    V = FreeCAD.Vector
+    sketch = doc.addObject("Sketcher::SketchObject", "ProfileSketch")
+    sketch.Placement = FreeCAD.Placement(V(), FreeCAD.Rotation(V(1, 0, 0), 90))  # sketch (x, y) -> (x, 0, y)
+    sketch.addGeometry(Part.LineSegment(V(4, 0, 0), V(4, 3, 0)))
+    sketch.addGeometry(Part.ArcOfCircle(Part.Circle(V(5, 3, 0), V(0, 0, 1), 1.0), math.pi / 2, math.pi))
+    doc.recompute()
+    return sketch
+
+
+def test_panel_takes_the_selected_sketch_as_the_revolution_profile(scene):
+    # Issue 32: the Revolution's profile picked as designers pick things: select a sketch in
+    # the tree or the 3D view, press the button. A face or a curve crossing the axis is refused
+    # with the reason, the last good shape stays; Cancel restores the default parabola.
+    import Part
+
+    import freecad_workbench as fw
+
+    doc = scene
+    sketch = profile_sketch(doc)
+    box = doc.addObject("Part::Box", "Box")
+    crossing = doc.addObject("Part::Feature", "Crossing")
+    crossing.Shape = Part.LineSegment(FreeCAD.Vector(1, 0, 0), FreeCAD.Vector(-1, 0, 1)).toShape()
+    doc.recompute()
+    blend = new_blend(doc)
+    panel = panel_of(blend)
+    assert panel.profile_box.isHidden()  # a sphere zone has no profile to pick
+    panel.set_kind("Revolution")
+    assert not panel.profile_box.isHidden() and "Default parabola" in panel.profile_label.text()
+    assert panel.widgets["ProfileEnd"].text() == "1"  # a fraction of the profile's range, not "1 mm"
+    sel = gui().Selection
+    sel.clearSelection()
+    panel.use_profile.click()  # nothing selected: a message, nothing changed
+    assert "Select a sketch" in panel.status_label.text() and blend.Profile is None
+    sel.addSelection(sketch)
+    panel.use_profile.click()
+    assert blend.Profile[0] == sketch and blend.Status == "ok", blend.Status
+    assert panel.profile_label.text() == sketch.Label
+    # the macro API's blend of the sketch's edges joined, split at thirds of their range
+    curve = fw.shapes.joined_profile(sketch.Shape)
+    a, b = curve.FirstParameter, curve.LastParameter
+    shape = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), np.radians(np.linspace(0, 360, 7)),
+                                 [a + (b - a) / 3, a + 2 * (b - a) / 3])
+    expected = fw.blend_basic_shape(shape).shell
+    good = surface_points(blend.Shape)
+    np.testing.assert_allclose(good, surface_points(expected), atol=1e-9)
+    for obj, sub, reason in ((box, "Face1", "Box.Face1 is a face"), (box, "", "Box has faces"),
+                             (crossing, "", "axis")):
+        sel.clearSelection()
+        sel.addSelection(obj, sub) if sub else sel.addSelection(obj)
+        panel.use_profile.click()
+        text = panel.status_label.text()
+        assert text.startswith("Profile not taken") and reason in text, text
+        assert blend.Profile[0] == sketch and blend.Status == "ok"
+        np.testing.assert_array_equal(surface_points(blend.Shape), good)
+    sel.clearSelection()
+    sel.addSelection(sketch, "Edge2")  # one edge of it: the arc alone
+    panel.use_profile.click()
+    assert blend.Profile == (sketch, ["Edge2"]) and blend.Status == "ok", blend.Status
+    assert panel.profile_label.text() == f"{sketch.Label}.Edge2"
+    panel.default_profile.click()
+    assert blend.Profile is None and "Default parabola" in panel.profile_label.text()
+    panel.set_profile((sketch, []))
+    panel.reject()
+    gui().updateGui()
+    assert blend.Kind == "Sphere zone" and blend.Profile is None and blend.Status == "ok"

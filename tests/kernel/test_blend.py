@@ -314,3 +314,31 @@ def test_partial_turn_blends_c2_open_in_u():
                 worst = max(worst, (right.getDN(0.0, v, order, 0) - left.getDN(1.0, v, order, 0) * beta ** order).Length
                             / scale)
     assert worst < 1e-8
+
+
+def _angle(point):
+    return math.atan2(point.y, point.x)
+
+
+@pytest.mark.parametrize("case", ["sphere", "cyclide", "cyclide_naive", "chain"])
+def test_default_ring_strip_joins_each_arc_to_the_ring_above_it(case):
+    # The strip's patch k joins the shape's arc k to the ring's span k: both ends of a
+    # transition patch at the same angles around the axis (OCCT's evaluation). The default
+    # ring's span k once lay two arcs further round (periodicCubic's pole layout): the strip
+    # twisted by 120 degrees on 6 arcs and narrowed to a waist (radius 7.07 -> 3.25 -> 5.5 on
+    # a sphere zone of radius 10), still C2.
+    lon = np.radians(np.linspace(0, 360, 7))
+    if case == "sphere":
+        result = fw.blend_basic_shape(fw.shapes.SphereZone((0, 0, 0), 10, lon, np.radians([-40, -10, 20, 45])))
+    elif case.startswith("cyclide"):
+        blend = fw.blend_naive if case == "cyclide_naive" else fw.blend_basic_shape
+        result = blend(fw.shapes.DupinCyclide((0, 0, 0), 10, 2, 4, lon, np.radians([-60, 0, 60])))
+    else:
+        result = fw.blend_chain(fw.shapes.Cylinder((0, 0, 0), 5, lon, [0, 2, 4]), start="default", end="default")
+    strips = [s for role, s in result.patches if role == "transition"]
+    assert strips
+    for strip in strips:
+        u0, u1, v0, v1 = strip.bounds()
+        for u in (u0, 0.5 * (u0 + u1), u1):
+            a, b = _angle(strip.value(u, v0)), _angle(strip.value(u, v1))
+            assert abs(math.remainder(a - b, 2 * math.pi)) < 0.2, (case, math.degrees(a), math.degrees(b))

@@ -281,6 +281,15 @@ def test_dupin_cyclide_is_exact_g2_and_blends_c2_into_its_ring():
     assert result.shell.isValid()
     with pytest.raises(fw.InputError, match="not a surface of revolution"):
         fw.blend_basic_shape(cyclide, continuity="C1")
+    # The naive baseline of Fig. 2a to the same ring: the cyclide's own G2 patches, exact; a
+    # valid shell; no single C2 surface (the arcs differ).
+    naive = fw.blend_naive(cyclide)
+    assert naive.surface is None and naive.shell.isValid()
+    assert [role for role, _ in naive.patches].count("transition") == 7
+    assert max(_cyclide_implicit(p, a, c, mu) for s in basic(naive) for p in samples(s, 6)) < 1e-12
+    assert [role for role, _ in naive.patches].count("freeform") == 7  # the ring on the sigma knots: one per arc
+    with pytest.raises(fw.InputError, match="not a surface of revolution"):
+        fw.blend_naive(cyclide, continuity="C1")
     with pytest.raises(fw.InputError, match="no real surface"):
         fw.shapes.DupinCyclide(CENTER, 1.0, 2.0, 1.5, NON_UNIFORM, angles_v)
     with pytest.raises(fw.InputError, match="not a ring cyclide"):
@@ -333,3 +342,16 @@ def test_a_sketch_like_profile_of_several_edges_is_joined_and_revolved():
     with pytest.raises(fw.InputError, match="connected wire"):
         far = Part.LineSegment(FreeCAD.Vector(5, 0, 5), FreeCAD.Vector(5, 0, 6)).toShape()
         fw.shapes.Revolution(Part.Compound([line, far]), (0, 0, 0), (0, 0, 1), NON_UNIFORM)
+
+
+def test_a_split_a_rounding_error_from_a_profile_knot_adds_no_row():
+    # A third of a Design spline's range (0 .. 2.999999999999999 on knots 0.2 apart) came out
+    # as 0.9999999999999997 beside its knot 1.0: a row of no length, a patch side collapsed.
+    curve, _ = _design_profile()
+    angles = [0.0, 2.0, 4.0, 2 * math.pi]
+    plain = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), angles)
+    knot = float(plain.profile.knots[2])
+    near = np.nextafter(np.nextafter(knot, -np.inf), -np.inf)
+    split = fw.shapes.Revolution(curve, (0, 0, 0), (0, 0, 1), angles, [near])
+    assert list(split.profile.knots) == list(plain.profile.knots)
+    assert fw.blend_basic_shape(split, at="end").shell.isValid()

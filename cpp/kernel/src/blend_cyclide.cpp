@@ -57,6 +57,50 @@ Eigen::RowVector4d inFrame(const ShapeFrame& f, const Eigen::Vector4d& h) {
   return {p.x(), p.y(), p.z(), h[3]};
 }
 
+/// The cyclide's default ring on the arc knots T (a full turn): around u the poles of the
+/// revolution's default ring on the unit theta circle, along v 4 rows on the psi circle's
+/// tangent beyond the last v angle, each mapped by the cyclide's bilinear form (rational).
+Handle(Geom_BSplineSurface) cyclideRing(const ShapeFrame& frame, double a, double b, double c, double mu,
+                                        const G2CircleSpline& lon, const Eigen::VectorXd& anglesV,
+                                        const Eigen::VectorXd& T) {
+  // The default ring in the same tensor form: around u the poles of the revolution's default
+  // ring on the unit theta circle (pushed out so that the cubic passes near it), along v 4
+  // rows on the psi circle's tangent beyond the interface; each pole mapped by the cyclide's
+  // bilinear form, so the ring is rational and continues the cyclide.
+  const int n = lon.pieces();
+  const double phi = anglesV[anglesV.size() - 1], h = anglesV[anglesV.size() - 1] - anglesV[anglesV.size() - 2];
+  TColgp_Array2OfPnt poles(1, n, 1, 4);
+  TColStd_Array2OfReal weights(1, n, 1, 4);
+  for (int j = 0; j < 4; ++j) {
+    const double s = h * (0.5 + 0.25 * j);
+    const Eigen::RowVector3d q(std::cos(phi) - s * std::sin(phi), std::sin(phi) + s * std::cos(phi), 1.0);
+    PointMatrix row(n, 4);
+    for (int i = 0; i < n; ++i) {
+      const double spread = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(spread));
+      const Eigen::RowVector3d p1(f * std::cos(lon.theta[i]), f * std::sin(lon.theta[i]), 1.0);
+      // row i + 2: the ring's span k between longitudes k and k + 1 (see defaultRing)
+      row.row((i + 2) % n) = inFrame(frame, cyclidePoint(a, b, c, mu, p1, q));
+      if (!(row((i + 2) % n, 3) > 0)) throw InputError("the cyclide's default ring has a weight that is not positive");
+    }
+    const BSplineCurve layout = periodicCubic(row, T);
+    for (int i = 0; i < n; ++i) {
+      const double w = layout.poles(i, 3);
+      poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0) / w, layout.poles(i, 1) / w, layout.poles(i, 2) / w));
+      weights.SetValue(i + 1, j + 1, w);
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, static_cast<int>(T.size())), vKnots(1, 2);
+  TColStd_Array1OfInteger uMults(1, static_cast<int>(T.size())), vMults(1, 2);
+  for (Eigen::Index k = 0; k < T.size(); ++k) {
+    uKnots.SetValue(static_cast<int>(k) + 1, T[k]);
+    uMults.SetValue(static_cast<int>(k) + 1, 1);
+  }
+  vKnots.SetValue(1, 0.0);
+  vKnots.SetValue(2, 1.0);
+  vMults.Init(4);
+  return new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 3, true, false);
+}
+
 }  // namespace
 
 G2Surface dupinCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
@@ -122,44 +166,52 @@ BlendComplex blendCyclide(const ShapeFrame& frame, double a, double c, double mu
       basic.layers.push_back(std::move(layer));
     }
   }
-  // The default ring in the same tensor form: around u the poles of the revolution's default
-  // ring on the unit theta circle (pushed out so that the cubic passes near it), along v 4
-  // rows on the psi circle's tangent beyond the interface; each pole mapped by the cyclide's
-  // bilinear form, so the ring is rational and continues the cyclide.
-  const Eigen::VectorXd T = arcKnots(c2);
-  const int n = lon.pieces();
-  const double phi = anglesV[anglesV.size() - 1], h = anglesV[anglesV.size() - 1] - anglesV[anglesV.size() - 2];
-  TColgp_Array2OfPnt poles(1, n, 1, 4);
-  TColStd_Array2OfReal weights(1, n, 1, 4);
-  for (int j = 0; j < 4; ++j) {
-    const double s = h * (0.5 + 0.25 * j);
-    const Eigen::RowVector3d q(std::cos(phi) - s * std::sin(phi), std::sin(phi) + s * std::cos(phi), 1.0);
-    PointMatrix row(n, 4);
-    for (int i = 0; i < n; ++i) {
-      const double spread = (lon.alpha[(i + n - 1) % n] + lon.alpha[i]) / 2, f = 3.0 / (2.0 + std::cos(spread));
-      const Eigen::RowVector3d p1(f * std::cos(lon.theta[i]), f * std::sin(lon.theta[i]), 1.0);
-      row.row(i) = inFrame(frame, cyclidePoint(a, b, c, mu, p1, q));
-      if (!(row(i, 3) > 0)) throw InputError("the cyclide's default ring has a weight that is not positive");
-    }
-    const BSplineCurve layout = periodicCubic(row, T);
-    for (int i = 0; i < n; ++i) {
-      const double w = layout.poles(i, 3);
-      poles.SetValue(i + 1, j + 1, gp_Pnt(layout.poles(i, 0) / w, layout.poles(i, 1) / w, layout.poles(i, 2) / w));
-      weights.SetValue(i + 1, j + 1, w);
-    }
-  }
-  TColStd_Array1OfReal uKnots(1, static_cast<int>(T.size())), vKnots(1, 2);
-  TColStd_Array1OfInteger uMults(1, static_cast<int>(T.size())), vMults(1, 2);
-  for (Eigen::Index k = 0; k < T.size(); ++k) {
-    uKnots.SetValue(static_cast<int>(k) + 1, T[k]);
-    uMults.SetValue(static_cast<int>(k) + 1, 1);
-  }
-  vKnots.SetValue(1, 0.0);
-  vKnots.SetValue(2, 1.0);
-  vMults.Init(4);
-  const Handle(Geom_BSplineSurface) ring =
-      new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 3, true, false);
+  const Handle(Geom_BSplineSurface) ring = cyclideRing(frame, a, b, c, mu, lon, anglesV, arcKnots(c2));
   return detail::assembleBlend(frame, lon, psi, std::move(basic), ring);
+}
+
+BlendComplex blendCyclideNaive(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                               const Eigen::VectorXd& anglesV) {
+  const G2Surface shape = dupinCyclide(frame, a, c, mu, anglesU, anglesV);
+  const double b = cyclideB(a, c, mu);
+  const G2CircleSpline lon = detail::checkedLongitudes(frame, anglesU);
+  if (!lon.closed) throw InputError("the cyclide's naive blend needs a full turn of angles_u");
+  // As blendRevolvedNaive: the arc knots of the blend (sigma: one piece per arc), the exact
+  // G2 patches, the ring, and Fig. 2a's direct Hermite strip of degree (3,5) between them.
+  const Eigen::VectorXd T = arcKnots(circleToC2(lon, CircleReparam::Sigma));
+  const Handle(Geom_BSplineSurface) r =
+      detail::matchRingStrict(cyclideRing(frame, a, b, c, mu, lon, anglesV, T), T, T, 3, true);
+  BlendComplex out;
+  out.knotsU = T;
+  out.piecesU = shape.nu;
+  out.closedU = true;
+  out.rowsBasic = shape.nv;
+  out.rowsFreeForm = r->NbVKnots() - 1;
+  out.knotsV =
+      Eigen::VectorXd::LinSpaced(out.rowsBasic + out.rowsFreeForm + 2, 0.0, out.rowsBasic + out.rowsFreeForm + 1);
+  for (int k = 0; k < out.piecesU; ++k) {
+    Homogeneous4 top, ringBottom;
+    for (int j = 0; j < out.rowsBasic; ++j) {
+      TaggedPatch p;
+      p.uPiece = k;
+      p.vPiece = j;
+      p.bezier = shape.bezier.middleRows((k * shape.nv + j) * 16, 16);
+      if (j + 1 == out.rowsBasic) top = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    for (int s = 0; s < out.rowsFreeForm; ++s) {
+      int du = 0, dv = 0;
+      TaggedPatch p;
+      p.role = TaggedPatch::Role::FreeForm;
+      p.uPiece = k;
+      p.vPiece = out.rowsBasic + 1 + s;
+      p.bezier = detail::bezierOf(r, T[k], T[k + 1], r->VKnot(s + 1), r->VKnot(s + 2), du, dv);
+      if (s == 0) ringBottom = p.bezier;
+      out.patches.push_back(std::move(p));
+    }
+    out.patches.push_back(detail::stripPatch(k, out.rowsBasic, 3, top, 3, ringBottom, 3));
+  }
+  return out;
 }
 
 }  // namespace fairsplines

@@ -216,7 +216,12 @@ Handle(Geom_BSplineSurface) defaultRing(const ShapeFrame& frame, const G2CircleS
     };
     PointMatrix row(poleCount, 3);
     if (lon.closed) {
-      for (int i = 0; i < n; ++i) row.row(i) = inner(i);
+      // periodicCubic stores row r as OCCT's pole r - 1, whose span [T_0, T_1] then lies
+      // between rows 2 and 3 (evaluated by OCCT: 120-180 degrees of 6 arcs); the strip pairs
+      // the ring's span k with the shape's arc k, so the pole of longitude i goes to row
+      // i + 2: span k between longitudes k and k + 1 (else the strip twists by two arcs and
+      // narrows to a waist, as a hyperboloid).
+      for (int i = 0; i < n; ++i) row.row((i + 2) % n) = inner(i);
       layout = periodicCubic(row, knotsU);
     } else {
       const auto tangentAt = [&](double theta) {

@@ -1,4 +1,5 @@
-"""Task panel of a Blend basic shape: kind, dimensions, the partitions (uniform counts and
+"""Task panel of a Blend basic shape: kind, a Revolution's profile (taken from the selection:
+a sketch, a Design spline or edges), dimensions, the partitions (uniform counts and
 range, or the lists as comma-separated values), how the strip is parametrised, the
 continuity and the free-form side. Every change recomputes at once; OK keeps the changes
 as one undo step, Cancel restores."""
@@ -17,10 +18,12 @@ from ...features.blend_shape import (
     METHODS,
     PROFILE_IN_DEGREES,
     angle_lists,
+    basic_shape,
     is_blend_shape,
+    profile_link,
 )
 from .. import icon_path
-from .form import LiveEdit, LiveEditPanel, compact, form_rows, show_status, wrapped_label
+from .form import LiveEdit, LiveEditPanel, button_column, compact, form_rows, show_status, wrapped_label
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -95,7 +98,7 @@ class BlendShapePanel(LiveEditPanel):
         dimensions = sorted({p for props in KIND_PROPERTIES.values() for p in props})
         self.session = LiveEdit(obj, translate("FairSplines", "Edit blend basic shape"),
                                 ["Kind", "Uniform", "Method", "Naive", "FreeForm", "FreeFormStart", "Interface",
-                                 "JoinTo", "Continuity"] + dimensions)
+                                 "JoinTo", "Continuity", "Profile"] + dimensions)
         self._updating = False
         self.widgets = {}
 
@@ -114,6 +117,20 @@ class BlendShapePanel(LiveEditPanel):
         self.uniform.toggled.connect(self.set_uniform)
         top.addRow(self.uniform)
         layout.addLayout(top)
+        # A Revolution's profile: what is selected in the 3D view or the tree.
+        self.profile_box = QtWidgets.QGroupBox(translate("FairSplines", "Profile"))
+        profile_layout = QtWidgets.QVBoxLayout(self.profile_box)
+        self.profile_label = wrapped_label()
+        profile_layout.addWidget(self.profile_label)
+        self.use_profile = QtWidgets.QPushButton(translate("FairSplines", "Use selected profile"))
+        self.use_profile.setToolTip(translate(
+            "FairSplines", "A sketch, a Design spline or edges, in a plane through the shape's axis and off "
+                           "the axis; revolved around the axis"))
+        self.use_profile.clicked.connect(self.use_selected_profile)
+        self.default_profile = QtWidgets.QPushButton(translate("FairSplines", "Default parabola"))
+        self.default_profile.clicked.connect(lambda: self.set_profile(None))
+        profile_layout.addLayout(button_column(self.use_profile, self.default_profile))
+        layout.addWidget(self.profile_box)
         self.dimensions_box = QtWidgets.QGroupBox(translate("FairSplines", "Dimensions"))
         self.dimensions = form_rows(box=self.dimensions_box)
         layout.addWidget(self.dimensions_box)
@@ -209,7 +226,8 @@ class BlendShapePanel(LiveEditPanel):
             self.dimensions.removeRow(0)
         self.widgets = {}
         kind = self.obj.Kind
-        profile_suffix = " °" if PROFILE_IN_DEGREES[kind] else " mm"
+        # degrees, lengths, or (Revolution) fractions of the profile's range: no unit
+        profile_suffix = " °" if PROFILE_IN_DEGREES[kind] else "" if kind == "Revolution" else " mm"
         names = list(KIND_LENGTHS[kind])
         names += ["AroundCount", "ProfileCount", "ProfileStart", "ProfileEnd"] if self.obj.Uniform else list(
             KIND_LISTS[kind])
@@ -366,6 +384,37 @@ class BlendShapePanel(LiveEditPanel):
                 return
         self.show_status(translate("FairSplines", "select a B-spline face of another object first"))
 
+    def set_profile(self, link):
+        """Revolve the linked profile ((object, [edge names])), or the default parabola (None)."""
+        current = self.obj.Profile
+        if link is None and (current is None or current[0] is None):
+            return
+        self._apply([("Profile", link)])
+
+    def use_selected_profile(self):
+        """The object selected in the 3D view or the tree (a sketch, a Design spline, any
+        object's edges) as the Revolution's profile. A selection that is no profile (a face, a
+        solid, a curve crossing the axis) is refused with the reason; the shape stays."""
+        selection = [s for s in FreeCADGui.Selection.getSelectionEx(self.doc.Name) if s.Object != self.obj]
+        if not selection:
+            self.show_message(translate("FairSplines", "Select a sketch, a Design spline or edges first"))
+            return
+        try:
+            link = profile_link(selection[0].Object, selection[0].SubElementNames)
+            basic_shape(self.obj, trial_profile=link)  # the revolution of it, before taking it
+        except InputError as exc:
+            self.show_message(translate("FairSplines", "Profile not taken: {}").format(exc))
+            return
+        self._apply([("Profile", link)])
+
+    def show_message(self, text):
+        """A refusal in the status line (red), until the next change."""
+        from .form import ERROR_STYLE
+
+        self.status_label.setText(text)
+        self.status_label.setStyleSheet(ERROR_STYLE)
+        self.status_label.setVisible(True)
+
     def _select(self, combo, index):
         if combo.currentIndex() != index:
             self._updating = True
@@ -377,6 +426,8 @@ class BlendShapePanel(LiveEditPanel):
 
     def refresh(self):
         self.patches_label.setText(translate("FairSplines", "Patches: {}").format(self.obj.Patches))
+        self.profile_box.setVisible(self.obj.Kind == "Revolution")
+        self.profile_label.setText(_profile_text(self.obj.Profile))
         both = self.obj.Interface == "Both ends"
         text = _link_text(self.obj.FreeForm)
         if self.obj.JoinTo is not None:
@@ -388,6 +439,15 @@ class BlendShapePanel(LiveEditPanel):
         self.start_label.setText(translate("FairSplines", "At the start: {}").format(
             _link_text(self.obj.FreeFormStart)))
         self.show_status(self.obj.Status)
+
+
+def _profile_text(link):
+    """A Revolution's profile as the panel shows it: the object's label (and its edges), or
+    the default parabola."""
+    if link is None or link[0] is None:
+        return translate("FairSplines", "Default parabola (no profile picked)")
+    subs = [s for s in link[1] if s]
+    return f"{link[0].Label}.{', '.join(subs)}" if subs else link[0].Label
 
 
 def _link_text(link):

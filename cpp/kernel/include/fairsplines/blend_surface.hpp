@@ -161,6 +161,12 @@ struct ShapeOfRevolution {
 BlendComplex blendCyclide(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
                           const Eigen::VectorXd& anglesV, CircleReparam method = CircleReparam::Rho);
 
+/// The naive baseline of Fig. 2a for a Dupin ring cyclide (for comparison): the exact G2
+/// patches joined to the same default ring by a direct Hermite strip of degree (3,5), no
+/// reparameterization; not C2 where the arcs differ. Throws InputError as blendCyclide.
+BlendComplex blendCyclideNaive(const ShapeFrame& frame, double a, double c, double mu, const Eigen::VectorXd& anglesU,
+                               const Eigen::VectorXd& anglesV);
+
 /// Section 4.2 for any shape of revolution (a Revolution's profile included): as blendCone,
 /// the interface at the end or start of its profile. A profile join that is only G2 (not C2
 /// in homogeneous space, e.g. a double knot) is made C2 by eq. (11) in the sextic rows
