@@ -179,12 +179,62 @@ def main(out):
     grab(out, "curvature_plot_tab")
     plot.close_plot_tabs()
     comb.hide()
+    surface_analysis(out)
+
+
+def analysed_part():
+    """A part with walls, fillets and a boss: flat, cylindrical, toroidal and saddle faces."""
+    import Part
+
+    V = FreeCAD.Vector
+    base = Part.makeBox(60, 40, 15)
+    boss = Part.makeCylinder(10, 12, V(30, 20, 15))
+    shape = base.fuse(boss).removeSplitter()
+    return shape.makeFillet(3.0, shape.Edges)
+
+
+def surface_analysis(out):
+    """The curvature map of a part with its panel open."""
+    import FreeCADGui
+
+    from freecad_workbench.gui import curvature_map
+    from freecad_workbench.gui.panels.curvature_map import CurvatureMapTaskPanel
+
+    doc = new_doc("SurfaceAnalysis")
+    part = doc.addObject("Part::Feature", "Part")
+    part.Shape = analysed_part()
+    doc.recompute()
+    FreeCADGui.Selection.clearSelection()
+    curvature_map.show([(part, "")], "mean")
+    panel = CurvatureMapTaskPanel(part)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    settle()
+    hit = None
+    for x in range(view.getSize()[0] // 2 - 40, view.getSize()[0] // 2 + 40, 4):
+        hit = curvature_map.probe_at(doc, (x, view.getSize()[1] // 2))
+        if hit is not None and abs(hit[1]) > 1e-6:
+            break
+    if hit is not None:
+        panel.show_value(curvature_map.describe(hit[0], hit[1], hit[2], "mean"))
+    grab(out, "curvature_map", "viewIsometric")
+    panel.turn_off()
     for name in list(FreeCAD.listDocuments()):
         FreeCAD.closeDocument(name)
     settle()
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(REPO, "docs", "gui"))
+    ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+    OUT = ARGS[0] if ARGS else os.path.join(REPO, "docs", "gui")
+    if "--surface" in sys.argv:  # only the surface analysis pictures
+        os.makedirs(OUT, exist_ok=True)
+        start_gui()
+        surface_analysis(OUT)
+    else:
+        main(OUT)
     sys.stdout.flush()
     os._exit(0)  # leave without tearing down Qt from Python (Shiboken crashes at exit otherwise)
