@@ -2,7 +2,9 @@
 task panel open in the side panel (and a fair blend with its comb): the README's GUI
 section shows them. Run under a virtual display:
 
-    xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR]
+    xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR] [--surface]
+
+--surface: only the surface analysis pictures (curvature map, continuity check, zebra).
 
 OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
 import math
@@ -221,6 +223,41 @@ def surface_analysis(out):
     if hit is not None:
         panel.show_value(curvature_map.describe(hit[0], hit[1], hit[2], "mean"))
     grab(out, "curvature_map", "viewIsometric")
+    panel.turn_off()
+    settle()
+
+    from freecad_workbench.gui import continuity
+    from freecad_workbench.gui.panels.continuity import ContinuityTaskPanel
+
+    check = continuity.show([(part, "")])
+    panel = ContinuityTaskPanel(check)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    kinks = [i for i, r in enumerate(check.records) if r.continuity == "G1"]
+    if kinks:
+        panel.choose(kinks[0])
+    grab(out, "continuity_check", "viewIsometric")
+    panel.reject()
+    settle()
+
+    import tempfile
+
+    import Part
+
+    from freecad_workbench.gui import zebra_shape
+    from freecad_workbench.gui.panels.zebra_shape import ZebraTaskPanel
+
+    step = os.path.join(tempfile.mkdtemp(), "part.step")
+    part.Shape.exportStep(step)
+    doc.removeObject(part.Name)
+    imported = doc.addObject("Part::Feature", "part_step")
+    imported.Shape = Part.read(step)
+    doc.recompute()
+    zebra_shape.show(imported, stripes=12)
+    panel = ZebraTaskPanel(imported)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    grab(out, "zebra_step_import", "viewIsometric")
     panel.turn_off()
     for name in list(FreeCAD.listDocuments()):
         FreeCAD.closeDocument(name)

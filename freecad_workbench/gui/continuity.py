@@ -134,7 +134,41 @@ class _Node:
         for node in children + [self.material, binding, self.coords, self.lines, mark]:
             self.root.addChild(node)
         self.set_mark(None)
+        self.legend_texts = self._legend(coin)
         self.views = []
+
+    def _legend(self, coin):
+        """The verdicts' colours and words at the lower left of the view (its own camera)."""
+        legend = coin.SoAnnotation()
+        camera = coin.SoOrthographicCamera()
+        camera.viewportMapping = coin.SoCamera.LEAVE_ALONE
+        camera.position = (0.0, 0.0, 5.0)
+        camera.height = 2.0
+        legend.addChild(camera)
+        font = coin.SoFont()
+        font.size = 14
+        legend.addChild(font)
+        texts = []
+        for k, (colour, words) in enumerate(list(VERDICTS.values())):
+            y = -0.9 + 0.08 * (len(VERDICTS) - 1 - k)
+            item = coin.SoSeparator()
+            base = coin.SoBaseColor()
+            base.rgb = colour
+            coords = coin.SoCoordinate3()
+            coords.point.setValues(0, 2, [(-0.96, y, 0.0), (-0.91, y, 0.0)])
+            line = coin.SoLineSet()
+            text_colour = coin.SoBaseColor()
+            text_colour.rgb = (0.05, 0.05, 0.05)
+            move = coin.SoTranslation()
+            move.translation = (-0.895, y - 0.015, 0.0)
+            text = coin.SoText2()
+            text.string = translate("FairSplines", words)
+            for node in (base, coords, line, text_colour, move, text):
+                item.addChild(node)
+            legend.addChild(item)
+            texts.append(text)
+        self.root.addChild(legend)
+        return texts
 
     def draw(self, shape, records):
         points, counts, colours = [], [], []

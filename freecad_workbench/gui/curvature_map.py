@@ -96,6 +96,12 @@ def _element(sub):
     return sub.rsplit(".", 1)[-1] if sub else ""
 
 
+def _string(text):
+    """The first line of a SoText2's string."""
+    value = text.string[0]
+    return value.getString() if hasattr(value, "getString") else str(value)
+
+
 class _Legend:
     """A colour bar with LEGEND_TICKS values and the quantity's name, drawn over the 3D view
     (SoAnnotation, in the view's normalised coordinates, unpickable)."""
@@ -173,7 +179,7 @@ class _Legend:
 
     def texts(self):
         """(title, [tick texts from the bottom]) as drawn."""
-        return self.title.string.getValues()[0], [t.string.getValues()[0] for t in self.ticks]
+        return _string(self.title), [_string(t) for t in self.ticks]
 
 
 class CurvatureMapNode:

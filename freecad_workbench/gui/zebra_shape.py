@@ -7,50 +7,39 @@ between the exact surface normal and a fixed light direction.
     show(obj, isophotes=(30, 60), light=(0, 0, 1))      # isophotes at 30 and 60 degrees
     hide(obj) / hide()
 
-The mesh is FreeCAD's triangulation of each face, made fine (a chordal deflection of 1/2000
-of the shape's size), with the exact normal of the face at every vertex (fw.surface_curvature
-at the vertices' surface parameters: one kernel call per face), so stripes stay sharp on small
-and large models. While shown the object is drawn as wireframe; its display mode comes back.
+The mesh is fw.curvature_map's triangulation of the faces (a chordal deflection of 1/5000
+of the shape's size, refined where the curvature changes fast), with normals averaged
+within each face, and the stripes are mapped from the view: they stay sharp on small and
+large models alike (Part's own tessellation that fine takes seconds a face). While shown
+the object is drawn as wireframe; its display mode comes back.
 """
 import numpy as np
 
 import FreeCAD
 
-DEFLECTION = 5e-4  # of the shape's diagonal
+DEFLECTION = 2e-4  # of the shape's diagonal
 ISOPHOTE_TEXELS = 1024  # the isophote texture: one texel a 0.18 degrees
 ISOPHOTE_WIDTH = 0.6  # degrees, each line's half width
 
 
 def shape_mesh(shape, deflection=None):
-    """(points (n, 3), normals (n, 3), triangles (m, 3)) of every face of a shape, normals
-    the faces' exact ones (Face.normalAt's side)."""
+    """(points (n, 3), normals (n, 3), triangles (m, 3)) of every face of a shape: the
+    triangulation of fw.curvature_map (fine, and finer where the surface bends fast), with
+    area-weighted vertex normals taken within each face only (the faces do not share
+    vertices there), so creases between faces stay sharp."""
     import freecad_workbench as fw
 
     size = shape.BoundBox.DiagonalLength or 1.0
-    deflection = deflection or DEFLECTION * size
-    points, normals, triangles, offset = [], [], [], 0
-    for face in shape.Faces:
-        vertices, tris = face.tessellate(deflection)
-        if not tris:
-            continue
-        p = np.array([(v.x, v.y, v.z) for v in vertices])
-        n = None
-        try:
-            uv = np.array([(q.x, q.y) for q in face.getUVNodes()])
-            if len(uv) == len(p):
-                n = fw.surface_curvature(face, uv).normal
-        except Exception:  # no UV nodes (older FreeCAD) or a point the kernel refuses
-            n = None
-        if n is None:
-            n = np.array([tuple(face.normalAt(*face.Surface.parameter(FreeCAD.Vector(*q)))) for q in p])
-        t = np.array(tris, dtype=int)
-        points.append(p)
-        normals.append(n)
-        triangles.append(t + offset)
-        offset += len(p)
-    if not points:
-        return np.zeros((0, 3)), np.zeros((0, 3)), np.zeros((0, 3), dtype=int)
-    return np.concatenate(points), np.concatenate(normals), np.concatenate(triangles)
+    mesh = fw.curvature_map(shape, "max_abs", deflection or DEFLECTION * size)
+    points, triangles = mesh.points, mesh.triangles
+    a, b, c = points[triangles[:, 0]], points[triangles[:, 1]], points[triangles[:, 2]]
+    area_normals = np.cross(b - a, c - a)  # counter-clockwise about the face normal
+    normals = np.zeros_like(points)
+    for k in range(3):
+        np.add.at(normals, triangles[:, k], area_normals)
+    length = np.linalg.norm(normals, axis=1)
+    normals[length > 0] /= length[length > 0][:, None]
+    return points, normals, triangles
 
 
 def isophote_coordinates(normals, light):

@@ -48,7 +48,7 @@ class ContinuityTaskPanel:
                                      icon_path("FairSplines_CheckContinuity"))
         rows = form_rows()
         tolerances = check.tolerances
-        self.angle = self._spin(0.0, 90.0, " \u00b0", 4, tolerances["angle_tolerance"])
+        self.angle = self._spin(0.0, 180.0, " \u00b0", 4, tolerances["angle_tolerance"])
         self.angle.setToolTip(translate("FairSplines", "Normals closer than this: tangent (G1)"))
         self.curvature = self._spin(0.0, 1000.0, " %", 3, 100.0 * tolerances["curvature_tolerance"])
         self.curvature.setToolTip(translate(
