@@ -114,7 +114,7 @@ class _Node:
         style.pointSize = 11
         self.material = coin.SoMaterial()
         binding = coin.SoMaterialBinding()
-        binding.value = coin.SoMaterialBinding.PER_PART
+        binding.value = coin.SoMaterialBinding.PER_FACE  # for a SoLineSet: one colour a polyline (PER_PART: a segment)
         self.coords = coin.SoCoordinate3()
         self.lines = coin.SoLineSet()
         mark = coin.SoSeparator()
@@ -176,10 +176,11 @@ class _Node:
             edge = shape.Edges[int(record.edge[4:]) - 1]
             try:
                 polyline = edge.discretize(Deflection=max(edge.Length, 1e-9) * 1e-3)
-            except Exception:  # a degenerate edge
-                continue
-            if len(polyline) < SAMPLES:
-                polyline = edge.discretize(SAMPLES)
+                if len(polyline) < SAMPLES:
+                    polyline = edge.discretize(SAMPLES)
+            except Exception:  # a degenerate edge (a sphere's pole): its ends, so rows and parts still match
+                polyline = [v.Point for v in edge.Vertexes] or [FreeCAD.Vector()]
+                polyline = (polyline * 2)[:2]
             points.extend((p.x, p.y, p.z) for p in polyline)
             counts.append(len(polyline))
             colours.append(colour_of(record.continuity))

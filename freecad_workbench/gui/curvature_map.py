@@ -131,7 +131,8 @@ class _Legend:
         points = [(x, float(y), 0.0) for y in ys for x in (self.LEFT, self.RIGHT)]
         rgb = colours(np.linspace(0.0, 1.0, n + 1), 0.0, 1.0)
         material = coin.SoMaterial()
-        material.diffuseColor.setValues(0, len(rgb), [tuple(map(float, c)) for c in np.repeat(rgb, 2, axis=0)])
+        per_vertex = [tuple(map(float, c)) for c in np.repeat(rgb, 2, axis=0)]  # both ends of each row
+        material.diffuseColor.setValues(0, len(per_vertex), per_vertex)
         binding = coin.SoMaterialBinding()
         binding.value = coin.SoMaterialBinding.PER_VERTEX
         coords = coin.SoCoordinate3()

@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from .. import continuity, icon_path
-from .form import SPIN_MAX_WIDTH, compact, fit_table, form_rows, new_form, short_spin_box, wrapped_label
+from .form import SPIN_MAX_WIDTH, compact, form_rows, new_form, short_spin_box, wrapped_label
 
 translate = FreeCAD.Qt.translate
 
@@ -60,7 +60,11 @@ class ContinuityTaskPanel:
         rows.addRow(translate("FairSplines", "Curvature"), self.curvature)
         rows.addRow(translate("FairSplines", "Gap"), self.gap)
         layout.addLayout(rows)
-        self.table = fit_table(QtWidgets.QTableWidget(0, len(COLUMNS)))
+        # Six columns do not fit the side panel's width: each as wide as its texts, and the
+        # table scrolls sideways (the panel itself stays within PANEL_WIDTH).
+        self.table = QtWidgets.QTableWidget(0, len(COLUMNS))
+        self.table.setMinimumWidth(120)
+        self.table.horizontalHeader().setSectionResizeMode(QtWidgets.QHeaderView.ResizeToContents)
         self.table.setSelectionBehavior(QtWidgets.QAbstractItemView.SelectRows)
         self.table.setSelectionMode(QtWidgets.QAbstractItemView.SingleSelection)
         self.table.setEditTriggers(QtWidgets.QAbstractItemView.NoEditTriggers)

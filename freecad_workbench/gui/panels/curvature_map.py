@@ -1,6 +1,8 @@
 """Task panel of the curvature map: the quantity, the automatic or a manual range (applied
 at once, recolouring without re-meshing), and the value under the cursor. Close keeps the
 map; Turn off removes it and restores the object's look."""
+import math
+
 import FreeCAD
 import FreeCADGui
 
@@ -92,8 +94,11 @@ class CurvatureMapTaskPanel:
     def _show_range(self):
         node = curvature_map.map_of(self.obj)
         lower, upper = node.range if node is not None else (0.0, 1.0)
+        span = abs(upper - lower) or abs(upper) or 1.0
+        decimals = int(min(8, max(1, 3 - math.floor(math.log10(span)))))  # about 4 digits of the range
         for spin, value in ((self.lower, lower), (self.upper, upper)):
             spin.blockSignals(True)
+            spin.setDecimals(decimals)
             spin.setSuffix(self._unit())
             spin.setSingleStep(max(abs(upper - lower) / 20, 1e-6))
             spin.setValue(value)
