@@ -171,6 +171,11 @@ def test_continuity_table_and_edge_colours_match_the_verdicts_and_a_row_selects_
         assert table.item(row, 1).text() == ", ".join(f[4:] for f in r.faces)
         assert float(table.item(row, 3).text()) == pytest.approx(r.angle, rel=0.01, abs=1e-3)
         assert table.item(row, 5).text() == r.continuity
+    from pivy import coin
+
+    bindings = [panel.check.node.root.getChild(k) for k in range(panel.check.node.root.getNumChildren())]
+    bindings = [b for b in bindings if b.isOfType(coin.SoMaterialBinding.getClassTypeId())]
+    assert [b.value.getValue() for b in bindings] == [coin.SoMaterialBinding.PER_FACE]  # a colour a polyline
     drawn = panel.check.node.edge_colours()
     assert len(drawn) == len(records)
     for (points, colour), r in zip(drawn, records):
