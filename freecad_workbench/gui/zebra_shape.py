@@ -18,8 +18,38 @@ import numpy as np
 import FreeCAD
 
 DEFLECTION = 2e-4  # of the shape's diagonal
+SPLIT = 0.02  # no triangle edge longer than this part of the shape's diagonal
 ISOPHOTE_TEXELS = 1024  # the isophote texture: one texel a 0.18 degrees
 ISOPHOTE_WIDTH = 0.6  # degrees, each line's half width
+
+
+def subdivide(points, triangles, limit, rounds=8):
+    """Split triangles with an edge longer than `limit` in four (midpoints shared between
+    neighbours), up to `rounds` times. Midpoints lie on the triangle's edges, so a split
+    triangle beside one that is not split leaves no crack. The view-relative texture
+    coordinates of the stripes are interpolated linearly across a triangle: the large flat
+    triangles of a planar face would draw them jagged."""
+    points, triangles = np.asarray(points, dtype=float), np.asarray(triangles, dtype=int)
+    for _ in range(rounds):
+        p = points
+        lengths = np.stack([np.linalg.norm(p[triangles[:, (k + 1) % 3]] - p[triangles[:, k]], axis=1)
+                            for k in range(3)], axis=1)
+        long = lengths.max(axis=1) > limit
+        if not long.any():
+            break
+        split = triangles[long]
+        edges = np.sort(np.concatenate([split[:, [0, 1]], split[:, [1, 2]], split[:, [2, 0]]]), axis=1)
+        unique, inverse = np.unique(edges, axis=0, return_inverse=True)
+        inverse = inverse.reshape(-1)
+        midpoints = 0.5 * (p[unique[:, 0]] + p[unique[:, 1]])
+        index = len(p) + inverse.reshape(3, -1).T  # the midpoints of edges 01, 12, 20 of each split triangle
+        m01, m12, m20 = index[:, 0], index[:, 1], index[:, 2]
+        v0, v1, v2 = split[:, 0], split[:, 1], split[:, 2]
+        new = np.concatenate([np.stack(t, axis=1) for t in
+                              ((v0, m01, m20), (m01, v1, m12), (m20, m12, v2), (m01, m12, m20))])
+        points = np.concatenate([p, midpoints])
+        triangles = np.concatenate([triangles[~long], new])
+    return points, triangles
 
 
 def shape_mesh(shape, deflection=None):
@@ -31,7 +61,7 @@ def shape_mesh(shape, deflection=None):
 
     size = shape.BoundBox.DiagonalLength or 1.0
     mesh = fw.curvature_map(shape, "max_abs", deflection or DEFLECTION * size)
-    points, triangles = mesh.points, mesh.triangles
+    points, triangles = subdivide(mesh.points, mesh.triangles, SPLIT * size)
     a, b, c = points[triangles[:, 0]], points[triangles[:, 1]], points[triangles[:, 2]]
     area_normals = np.cross(b - a, c - a)  # counter-clockwise about the face normal
     normals = np.zeros_like(points)
