@@ -23,12 +23,13 @@ ISOPHOTE_TEXELS = 1024  # the isophote texture: one texel a 0.18 degrees
 ISOPHOTE_WIDTH = 0.6  # degrees, each line's half width
 
 
-def subdivide(points, triangles, limit, rounds=8):
+def subdivide(points, triangles, limit, normals=None, rounds=8):
     """Split triangles with an edge longer than `limit` in four (midpoints shared between
     neighbours), up to `rounds` times. Midpoints lie on the triangle's edges, so a split
     triangle beside one that is not split leaves no crack. The view-relative texture
     coordinates of the stripes are interpolated linearly across a triangle: the large flat
-    triangles of a planar face would draw them jagged."""
+    triangles of a planar face would draw them jagged. normals (n, 3), if given, are carried
+    along (a midpoint's is the normalised mean of its edge's ends): (points, triangles, normals)."""
     points, triangles = np.asarray(points, dtype=float), np.asarray(triangles, dtype=int)
     for _ in range(rounds):
         p = points
@@ -49,7 +50,12 @@ def subdivide(points, triangles, limit, rounds=8):
                               ((v0, m01, m20), (m01, v1, m12), (m20, m12, v2), (m01, m12, m20))])
         points = np.concatenate([p, midpoints])
         triangles = np.concatenate([triangles[~long], new])
-    return points, triangles
+        if normals is not None:
+            mean = normals[unique[:, 0]] + normals[unique[:, 1]]
+            length = np.linalg.norm(mean, axis=1)
+            mean[length > 0] /= length[length > 0][:, None]
+            normals = np.concatenate([normals, mean])
+    return points, triangles, normals
 
 
 def shape_mesh(shape, deflection=None):
@@ -61,7 +67,7 @@ def shape_mesh(shape, deflection=None):
 
     size = shape.BoundBox.DiagonalLength or 1.0
     mesh = fw.curvature_map(shape, "max_abs", deflection or DEFLECTION * size)
-    points, triangles = subdivide(mesh.points, mesh.triangles, SPLIT * size)
+    points, triangles = mesh.points, mesh.triangles
     a, b, c = points[triangles[:, 0]], points[triangles[:, 1]], points[triangles[:, 2]]
     area_normals = np.cross(b - a, c - a)  # counter-clockwise about the face normal
     normals = np.zeros_like(points)
@@ -69,6 +75,7 @@ def shape_mesh(shape, deflection=None):
         np.add.at(normals, triangles[:, k], area_normals)
     length = np.linalg.norm(normals, axis=1)
     normals[length > 0] /= length[length > 0][:, None]
+    points, triangles, normals = subdivide(points, triangles, SPLIT * size, normals)
     return points, normals, triangles
 
 
