@@ -2,7 +2,9 @@
 task panel open in the side panel (and a fair blend with its comb): the README's GUI
 section shows them. Run under a virtual display:
 
-    xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR]
+    xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR] [--surface]
+
+--surface: only the surface analysis pictures (curvature map, continuity check, zebra).
 
 OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
 import math
@@ -179,12 +181,97 @@ def main(out):
     grab(out, "curvature_plot_tab")
     plot.close_plot_tabs()
     comb.hide()
+    surface_analysis(out)
+
+
+def analysed_part():
+    """A part with walls, fillets and a boss: flat, cylindrical, toroidal and saddle faces."""
+    import Part
+
+    V = FreeCAD.Vector
+    base = Part.makeBox(60, 40, 15)
+    boss = Part.makeCylinder(10, 12, V(30, 20, 15))
+    shape = base.fuse(boss).removeSplitter()
+    return shape.makeFillet(3.0, shape.Edges)
+
+
+def surface_analysis(out):
+    """The curvature map of a part with its panel open."""
+    import FreeCADGui
+
+    from freecad_workbench.gui import curvature_map
+    from freecad_workbench.gui.panels.curvature_map import CurvatureMapTaskPanel
+
+    doc = new_doc("SurfaceAnalysis")
+    part = doc.addObject("Part::Feature", "Part")
+    part.Shape = analysed_part()
+    doc.recompute()
+    FreeCADGui.Selection.clearSelection()
+    curvature_map.show([(part, "")], "mean")
+    panel = CurvatureMapTaskPanel(part)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    view = FreeCADGui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    view.fitAll()
+    settle()
+    hit = None
+    for x in range(view.getSize()[0] // 2 - 40, view.getSize()[0] // 2 + 40, 4):
+        hit = curvature_map.probe_at(doc, (x, view.getSize()[1] // 2))
+        if hit is not None and abs(hit[1]) > 1e-6:
+            break
+    if hit is not None:
+        panel.show_value(curvature_map.describe(hit[0], hit[1], hit[2], "mean"))
+    grab(out, "curvature_map", "viewIsometric")
+    panel.turn_off()
+    settle()
+
+    from freecad_workbench.gui import continuity
+    from freecad_workbench.gui.panels.continuity import ContinuityTaskPanel
+
+    check = continuity.show([(part, "")])
+    panel = ContinuityTaskPanel(check)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    kinks = [i for i, r in enumerate(check.records) if r.continuity == "G1"]
+    if kinks:
+        panel.choose(kinks[0])
+    grab(out, "continuity_check", "viewIsometric")
+    panel.reject()
+    settle()
+
+    import tempfile
+
+    import Part
+
+    from freecad_workbench.gui import zebra_shape
+    from freecad_workbench.gui.panels.zebra_shape import ZebraTaskPanel
+
+    step = os.path.join(tempfile.mkdtemp(), "part.step")
+    part.Shape.exportStep(step)
+    doc.removeObject(part.Name)
+    imported = doc.addObject("Part::Feature", "part_step")
+    imported.Shape = Part.read(step)
+    doc.recompute()
+    zebra_shape.show(imported, stripes=12)
+    panel = ZebraTaskPanel(imported)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    grab(out, "zebra_step_import", "viewIsometric")
+    panel.turn_off()
     for name in list(FreeCAD.listDocuments()):
         FreeCAD.closeDocument(name)
     settle()
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else os.path.join(REPO, "docs", "gui"))
+    ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
+    OUT = ARGS[0] if ARGS else os.path.join(REPO, "docs", "gui")
+    if "--surface" in sys.argv:  # only the surface analysis pictures
+        os.makedirs(OUT, exist_ok=True)
+        start_gui()
+        surface_analysis(OUT)
+    else:
+        main(OUT)
     sys.stdout.flush()
     os._exit(0)  # leave without tearing down Qt from Python (Shiboken crashes at exit otherwise)

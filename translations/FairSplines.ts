@@ -19,6 +19,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>1: the longest tooth a quarter of the curves&apos; size and short of its centre of curvature. Negative: the comb on the other side.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/comb.py"/>
         <source>1: the longest tooth is at most a quarter of the curve&apos;s size, and every tooth ends short of its centre of curvature (at most 90% of the way), so the teeth of an arc do not cross. Above 1 teeth may reach past their centres. Negative: the comb on the other side.</source>
         <translation type="unfinished"></translation>
@@ -64,7 +69,13 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
         <source>Angles (°)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -76,6 +87,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Angles around the tube, in degrees, where the profile&apos;s arcs meet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Angles between the surface normal and the light, in degrees, separated by commas</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -114,8 +130,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Automatic range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <source>Basic curve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Black and white stripe pairs around the reflected sky</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -129,13 +155,28 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Blue from here down</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/blend_shape.py"/>
         <source>Both ends</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>Boundary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>C2: (6,5) strip to bicubic NURBS (Section 4.2); C1: (4,2) double strip to biquadratic NURBS (Section 5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Check continuity</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -154,6 +195,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Combs on isolines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/blend_shape.py"/>
         <source>Cone</source>
         <translation type="unfinished"></translation>
@@ -161,6 +207,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Continuous in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Curvature</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -180,8 +231,28 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Curvature jumps smaller than this, in % of the largest curvature along the edge: G2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Curvature map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Curvature plot samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Curves per face and direction, evenly spaced</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -226,8 +297,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
         <source>Drag a control point in the 3D view, or pick it in the list and type its position. A moved point changes the curve only near it (on the four spans it supports).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Edge</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -291,6 +372,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Faces farther apart than this: a gap. 0: twice the edge&apos;s own tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/form.py"/>
         <source>Failed: {}</source>
         <translation type="unfinished"></translation>
@@ -311,6 +402,47 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>From the 2nd to the 98th percentile of the values, so that a few extreme points do not wash out the colours of the rest.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>G0: kink</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>G1: tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>G2: curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Gap, G0 (a kink), G1 (tangent), G2 (curvature continuous) or boundary (one face only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Gaussian curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Gaussian: k1 k2 (1/mm²), negative on saddles. Mean: (k1 + k2) / 2. Largest |curvature|: max(|k1|, |k2|). Minimum and maximum: the principal curvatures k2 and k1. Radius: 1 / largest |curvature|. Convex is positive, seen from the face&apos;s outside.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>General</source>
         <translation type="unfinished"></translation>
@@ -318,6 +450,21 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Heights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Highest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Horizontal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>How many</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -341,6 +488,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Isolines: the face&apos;s own parameter lines. Sections: cuts by evenly spaced planes across the faces&apos; box, normal to that axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Isophotes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Join</source>
         <translation type="unfinished"></translation>
@@ -361,9 +518,34 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Jump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Kind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Largest angle between the faces&apos; normals, degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Largest gap between the faces, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Largest jump of curvature across the edge, % of the largest curvature along it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Largest |curvature|</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -377,6 +559,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Light from the view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/basic_curve.py"/>
         <source>Line segment</source>
         <translation type="unfinished"></translation>
@@ -384,6 +571,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Longitudes (°)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Lowest</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -400,6 +592,21 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Mark {} of this piece (its parameter u in 0..1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Maximum curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Mean curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Minimum curvature</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -425,6 +632,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Move the cursor over the map to read its value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
         <source>Moved</source>
         <translation type="unfinished"></translation>
@@ -432,6 +644,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
         <source>No step needed moving: the curvature is monotone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Normals closer than this: tangent (G1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -453,6 +670,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Or join to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>Other</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -557,13 +779,33 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>Radius of curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/basic_curve.py"/>
         <source>Rational cubic</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Red from here up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
         <source>Remove last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <source>Remove the map and show the object as before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Remove the shading and show the object as before</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -603,6 +845,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
         <source>Scale</source>
         <translation type="unfinished"></translation>
     </message>
@@ -612,8 +855,29 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Sections across X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Sections across Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>Sections across Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Select a sketch, a Design spline or edges first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Show</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -688,6 +952,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Stripes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Tangent (C1)</source>
         <translation type="unfinished"></translation>
@@ -713,6 +982,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>The faces that meet at the edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>The light shines along the current view direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>This part of the curve is the csr-spline of the samples (curvature-sensitive spline, Section 4 of the paper): close to every sample, without added curvature wiggles</source>
         <translation type="unfinished"></translation>
@@ -728,8 +1007,24 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Turn off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <source>Turns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>U and V isolines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>U isolines</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -750,6 +1045,21 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Use selected profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
+        <source>V isolines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <source>Verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Vertical</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -783,8 +1093,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Zebra</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Zebra stripes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
+        <source>Zebra: the faces reflect black and white stripes; kinks in the stripes show G1 joins, breaks show G0. Isophotes: lines where the surface meets the light at the same angle.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -813,6 +1134,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/curvature_map.py"/>
+        <source>{label}: {quantity} {value} {unit} at ({x}, {y}, {z}) mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
         <source>{} control points, {} moved</source>
         <translation type="unfinished"></translation>
@@ -837,7 +1163,8 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/commands/analysis.py"/>
-        <source>Curvature comb, curvature plot, monotonicity check, zebra profile test</source>
+        <source>Curvature comb, curvature plot, monotonicity check, curvature map,
+continuity check, zebra, combs on isolines, zebra profile test</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -892,6 +1219,21 @@ Set it up in the panel; zebra stripes show the seams.</source>
     <message>
         <location filename="../freecad_workbench/gui/commands/__init__.py"/>
         <source>Fair blend between two curves, monotone design, blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CheckContinuity</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Check continuity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>How smoothly the faces of the selected shape (or the selected faces) meet at each edge:
+gap, G0 (a kink), G1 (tangent) or G2 (curvature continuous), drawn in colour on the edges
+and listed in a table with the gap, angle and curvature jump. Click a row to find the edge.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -963,6 +1305,21 @@ edges are sampled.</source>
         <source>Show or hide the curvature comb of the selected edges.
 With nothing selected, hide all combs.
 A whole object&apos;s comb is its view property Curvature Comb, saved with the document.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_CurvatureMap</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Colour the selected shapes or faces by their curvature (Gaussian, mean, largest,
+minimum, maximum or radius), with a colour bar, an automatic or manual range, and
+the value under the cursor. Again on a mapped object: turn its map off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature map</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1065,6 +1422,20 @@ curvature changes sign only where the data does (the csr-spline of chosen points
     </message>
 </context>
 <context>
+    <name>FairSplines_IsoCombs</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Combs on isolines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Curvature combs on the U and V isolines, or on planar cross sections, of the selected
+faces or shapes: how the curvature runs across a surface, not only along its edges.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>FairSplines_LineSegment</name>
     <message>
         <location filename="../freecad_workbench/gui/commands/design.py"/>
@@ -1160,6 +1531,21 @@ vertical axis, or Z (change AxisPoint / AxisDirection).</source>
     <message>
         <location filename="../freecad_workbench/gui/commands/design.py"/>
         <source>Rational cubic</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_Zebra</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Show the selected shapes reflecting black and white stripes (zebra), or with isophotes:
+stripes that kink or break show where faces meet only tangent or with a kink.
+Again on a shaded object: turn it off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/analysis.py"/>
+        <source>Zebra</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

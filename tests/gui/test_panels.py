@@ -216,6 +216,24 @@ def test_comb_panel_fits(active, artifacts):
     panel.form.deleteLater()
 
 
+def test_curvature_map_panel_fits(active, artifacts):
+    from freecad_workbench.gui import curvature_map
+    from freecad_workbench.gui.panels.curvature_map import CurvatureMapTaskPanel
+
+    obj = active.addObject("Part::Feature", "Ball")
+    obj.Shape = Part.makeSphere(10)
+    active.recompute()
+    curvature_map.show([(obj, "")], "gaussian")
+    panel = CurvatureMapTaskPanel(obj)
+    panel.show_value(curvature_map.describe(obj, -0.00123456, (123.456, -78.9, 1000.25), "gaussian"))
+    try:
+        assert_fits(panel, "Curvature map panel")
+        picture(panel, "curvature_map", artifacts)
+    finally:
+        panel.form.deleteLater()
+        curvature_map.hide()
+
+
 def test_panels_ask_for_ok_and_cancel_as_freecad_takes_them(active):
     """FreeCAD reads getStandardButtons() as an int: PySide6's enum flags do not convert with
     int() (FreeCAD 1.1 printed a TypeError for every panel opened)."""
@@ -230,3 +248,53 @@ def test_panels_ask_for_ok_and_cancel_as_freecad_takes_them(active):
     close(panel)
     assert type(buttons) is int
     assert buttons == value(QtWidgets.QDialogButtonBox.Ok) | value(QtWidgets.QDialogButtonBox.Cancel)
+
+
+def test_continuity_panel_fits(active, artifacts):
+    from freecad_workbench.gui import continuity
+    from freecad_workbench.gui.panels.continuity import ContinuityTaskPanel
+
+    obj = active.addObject("Part::Feature", "Part")
+    box = Part.makeBox(20, 20, 20)
+    obj.Shape = box.makeFillet(3.0, box.Edges[:4])
+    active.recompute()
+    panel = ContinuityTaskPanel(continuity.show([(obj, "")]))
+    try:
+        assert_fits(panel, "Continuity panel")
+        picture(panel, "continuity", artifacts)
+    finally:
+        panel.form.deleteLater()
+        continuity.hide()
+
+
+def test_zebra_panel_fits(active, artifacts):
+    from freecad_workbench.gui import zebra_shape
+    from freecad_workbench.gui.panels.zebra_shape import ZebraTaskPanel
+
+    obj = active.addObject("Part::Feature", "Box")
+    obj.Shape = Part.makeBox(10, 10, 10)
+    active.recompute()
+    zebra_shape.show(obj)
+    panel = ZebraTaskPanel(obj)
+    try:
+        assert_fits(panel, "Zebra panel")
+        picture(panel, "zebra", artifacts)
+    finally:
+        panel.form.deleteLater()
+        zebra_shape.hide()
+
+
+def test_iso_combs_panel_fits(active, artifacts):
+    from freecad_workbench.gui import iso_combs
+    from freecad_workbench.gui.panels.iso_combs import IsoCombsTaskPanel
+
+    obj = active.addObject("Part::Feature", "Can")
+    obj.Shape = Part.makeCylinder(5, 20)
+    active.recompute()
+    panel = IsoCombsTaskPanel([(obj, "Face1")])
+    try:
+        assert_fits(panel, "Combs on isolines panel")
+        picture(panel, "iso_combs", artifacts)
+    finally:
+        panel.form.deleteLater()
+        iso_combs.hide()
