@@ -652,6 +652,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/continuity.py"/>
+        <source>Not judged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/view_providers.py"/>
         <source>Number of black and white stripe pairs reflected</source>
         <translation type="unfinished"></translation>
@@ -670,11 +675,6 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Or join to</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../freecad_workbench/gui/continuity.py"/>
-        <source>Other</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

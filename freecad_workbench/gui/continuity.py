@@ -24,7 +24,8 @@ VERDICTS = {
     "G2": ((0.0, 0.7, 0.1), QT_TRANSLATE_NOOP("FairSplines", "G2: curvature")),
     "boundary": ((0.2, 0.35, 0.95), QT_TRANSLATE_NOOP("FairSplines", "Boundary")),
 }
-OTHER = ((0.6, 0.0, 0.6), QT_TRANSLATE_NOOP("FairSplines", "Other"))  # free, degenerate, non-manifold
+# Free, degenerate (a collapsed side) and non-manifold edges.
+OTHER = ((0.6, 0.0, 0.6), QT_TRANSLATE_NOOP("FairSplines", "Not judged"))
 MARK_COLOUR = (0.9, 0.0, 0.9)
 LINE_WIDTH = 4.0
 SAMPLES = 48  # points a drawn edge, at least
