@@ -182,11 +182,18 @@ TEST(SpaceCertificate, PlanarCurvesHaveNoTorsionAndAgreeWithThePlanarCertificate
 }
 
 // The sweeps: 1000 G1 and 1000 G2 cases from space curves of linear curvature and
-// torsion, judged by OCCT.
+// torsion, judged by OCCT. The sanitized build (make test-sanitize, where a case costs about
+// 10 times as much) runs the first 250 of them for memory and undefined-behaviour errors and
+// checks each case as here; the rate is the release build's to assert, over all 1000.
+#ifdef FAIRSPLINES_SANITIZED
+constexpr int kSweepCases = 250;
+#else
+constexpr int kSweepCases = 1000;
+#endif
 void sweep(bool g2, double wantedRate) {
   std::mt19937 rng(g2 ? 2802 : 2801);
   int monotone = 0, disagreements = 0, oneSign = 0, oneSignFlipped = 0;
-  for (int i = 0; i < 1000; ++i) {
+  for (int i = 0; i < kSweepCases; ++i) {
     const SpaceCase sc = randomSpaceCase(rng);
     // The generating curve's torsion at 1/3 and 2/3 of its length (linear between).
     const double tauA = sc.tau0 + (sc.tau1 - sc.tau0) / 3.0, tauB = sc.tau0 + 2.0 * (sc.tau1 - sc.tau0) / 3.0;
@@ -218,8 +225,8 @@ void sweep(bool g2, double wantedRate) {
   std::printf("%s: %d of %d monotone blends of ends cut from a curve of torsion of one sign flip torsion\n",
               g2 ? "G2" : "G1", oneSignFlipped, oneSign);
   EXPECT_EQ(oneSignFlipped, 0) << "torsion of one sign where the ends allow it";
-  std::printf("%s: %d of 1000 certified monotone\n", g2 ? "G2" : "G1", monotone);
-  EXPECT_GE(monotone, wantedRate * 1000) << (g2 ? "G2" : "G1");
+  std::printf("%s: %d of %d certified monotone\n", g2 ? "G2" : "G1", monotone, kSweepCases);
+  if (kSweepCases == 1000) EXPECT_GE(monotone, wantedRate * 1000) << (g2 ? "G2" : "G1");
   EXPECT_EQ(disagreements, 0) << "certified extrema OCCT does not see";
 }
 
