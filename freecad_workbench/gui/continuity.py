@@ -13,6 +13,8 @@ import numpy as np
 
 import FreeCAD
 
+from .scene import ViewAttached
+
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
@@ -99,7 +101,7 @@ class Check:
         FreeCADGui.Selection.addSelection(self.obj, self.object_edge(i))
 
 
-class _Node:
+class _Node(ViewAttached):
     def __init__(self):
         from pivy import coin
 
@@ -213,19 +215,6 @@ class _Node:
     def mark_points(self):
         n = self.marker.numPoints.getValue()
         return [tuple(p.getValue()) for p in self.mark_coords.point][:n]
-
-    def attach(self, view):
-        if view is not None:
-            view.getSceneGraph().addChild(self.root)
-            self.views.append(view)
-
-    def detach(self):
-        for view in self.views:
-            try:
-                view.getSceneGraph().removeChild(self.root)
-            except Exception:  # the view was closed
-                pass
-        self.views = []
 
 
 _checks = []

@@ -19,6 +19,8 @@ import numpy as np
 
 import FreeCAD
 
+from .scene import ViewAttached
+
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
 
@@ -183,7 +185,7 @@ class _Legend:
         return _string(self.title), [_string(t) for t in self.ticks]
 
 
-class CurvatureMapNode:
+class CurvatureMapNode(ViewAttached):
     """The coloured triangulation of one object's faces (global coordinates, unpickable)."""
 
     def __init__(self, obj, faces=()):
@@ -302,22 +304,6 @@ class CurvatureMapNode:
         values = self.data.values[tri[k]]
         value = (1 - u[k] - v[k]) * values[0] + u[k] * values[1] + v[k] * values[2]
         return float(value), o + t[k] * d
-
-    def attach(self, view):
-        if view is None or any(v is view for v in self.views):
-            return
-        view.getSceneGraph().addChild(self.root)
-        self.views.append(view)
-
-    def detach(self):
-        for view in self.views:
-            try:
-                graph = view.getSceneGraph()
-                if graph.findChild(self.root) >= 0:
-                    graph.removeChild(self.root)
-            except Exception:  # the view was closed
-                pass
-        self.views = []
 
     def set_visible(self, visible):
         from pivy import coin

@@ -7,6 +7,8 @@ marked points, as unpickable annotations. GUI only (pivy).
 """
 from pivy import coin
 
+from .scene import ViewAttached
+
 POLYGON_COLOR = (0.1, 0.65, 0.2)  # green, as the paper's control points
 POLE_COLOR = (0.1, 0.65, 0.2)
 MARK_COLOR = (0.0, 0.0, 0.0)
@@ -42,7 +44,7 @@ class _Markers:
         self.markers.numPoints = len(points)
 
 
-class Overlay:
+class Overlay(ViewAttached):
     """Control polygon (lines + pole markers), mark markers, highlighted and moved points."""
 
     def __init__(self, name="FairSplinesOverlay"):
@@ -86,23 +88,6 @@ class Overlay:
 
     def set_highlight(self, points):
         self.highlight.set(points)
-
-    def attach(self, view):
-        """Add the overlay to a 3D view's scene graph (once)."""
-        if view is None or any(v is view for v in self.views):
-            return
-        view.getSceneGraph().addChild(self.root)
-        self.views.append(view)
-
-    def detach(self):
-        for view in self.views:
-            try:
-                graph = view.getSceneGraph()
-                if graph.findChild(self.root) >= 0:
-                    graph.removeChild(self.root)
-            except Exception:  # the view was closed
-                pass
-        self.views = []
 
     def polygon_points(self):
         return [tuple(p.getValue()) for p in self.polygon_coords.point]

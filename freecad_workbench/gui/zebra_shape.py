@@ -17,6 +17,8 @@ import numpy as np
 
 import FreeCAD
 
+from .scene import ViewAttached
+
 DEFLECTION = 2e-4  # of the shape's diagonal
 SPLIT = 0.02  # no triangle edge longer than this part of the shape's diagonal
 ISOPHOTE_TEXELS = 1024  # the isophote texture: one texel a 0.18 degrees
@@ -96,7 +98,7 @@ def isophote_image(angles, size=ISOPHOTE_TEXELS):
     return row.tobytes(), size
 
 
-class ShapeZebraNode:
+class ShapeZebraNode(ViewAttached):
     """Zebra or isophotes over one object's faces (global coordinates, unpickable)."""
 
     def __init__(self, obj):
@@ -161,19 +163,6 @@ class ShapeZebraNode:
                 z.root.replaceChild(coordinates, z.environment)
             self.rotation.center = (0.5, 0.5)
             self.rotation.rotation = 0.0 if self.vertical else np.pi / 2
-
-    def attach(self, view):
-        if view is not None:
-            view.getSceneGraph().addChild(self.root)
-            self.views.append(view)
-
-    def detach(self):
-        for view in self.views:
-            try:
-                view.getSceneGraph().removeChild(self.root)
-            except Exception:  # the view was closed
-                pass
-        self.views = []
 
 
 _nodes = {}

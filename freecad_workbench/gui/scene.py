@@ -1,0 +1,26 @@
+"""Coin drawings shown in 3D views beside the document's own: the one place that adds a
+drawing's root to views' scene graphs and takes it out again. GUI only."""
+
+
+class ViewAttached:
+    """A drawing with a coin separator `root`, shown in the views it is attached to."""
+
+    views = ()
+
+    def attach(self, view):
+        """Add the drawing to a 3D view's scene graph (once per view; None: nothing)."""
+        if view is None or any(v is view for v in self.views):
+            return
+        view.getSceneGraph().addChild(self.root)
+        self.views = [*self.views, view]
+
+    def detach(self):
+        """Take the drawing out of every view it was added to (closed views are skipped)."""
+        for view in self.views:
+            try:
+                graph = view.getSceneGraph()
+                if graph.findChild(self.root) >= 0:
+                    graph.removeChild(self.root)
+            except Exception:  # the view was closed
+                pass
+        self.views = []
