@@ -19,7 +19,7 @@ import numpy as np
 
 import FreeCAD
 
-from .scene import ViewAttached
+from .scene import ViewAttached, event_position
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -510,7 +510,7 @@ def _on_move(doc_name, info):
     if doc is None:
         return
     event = info.getEvent()
-    hit = probe_at(doc, event.getPosition().getValue())
+    hit = probe_at(doc, event_position(event))
     text = "" if hit is None else describe(hit[0], hit[1], hit[2], _maps[_key(hit[0])].quantity)
     from .qt import main_window
 

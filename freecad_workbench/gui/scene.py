@@ -24,3 +24,10 @@ class ViewAttached:
             except Exception:  # the view was closed
                 pass
         self.views = []
+
+
+def event_position(event):
+    """The pixel position (x, y) of a coin event. By index: pivy 0.6.10 (Debian sid's,
+    FreeCAD 1.1) returns a bare pointer from SbVec2s.getValue(), older pivy a list."""
+    position = event.getPosition()
+    return int(position[0]), int(position[1])

@@ -11,6 +11,7 @@ from ...features.edit_polygon import reset_pole, set_pole, source_edge
 from .. import icon_path
 from .form import LiveEdit, LiveEditPanel, button_column, compact, form_rows, show_status, wrapped_label
 from ..overlay import Overlay, active_view
+from ..scene import event_position
 
 translate = FreeCAD.Qt.translate
 
@@ -239,7 +240,7 @@ class EditPolygonPanel(LiveEditPanel):
         event = event_callback.getEvent()
         if event.getButton() != coin.SoMouseButtonEvent.BUTTON1:
             return
-        x, y = event.getPosition().getValue()
+        x, y = event_position(event)
         if event.getState() == coin.SoButtonEvent.DOWN:
             if self.press(x, y):
                 event_callback.setHandled()
@@ -249,7 +250,7 @@ class EditPolygonPanel(LiveEditPanel):
     def _on_move(self, event_callback):
         if self.dragging is None:
             return
-        x, y = event_callback.getEvent().getPosition().getValue()
+        x, y = event_position(event_callback.getEvent())
         self.drag(x, y)
         event_callback.setHandled()
 
