@@ -19,7 +19,7 @@ import numpy as np
 
 import FreeCAD
 
-from .scene import ViewAttached, event_position
+from .scene import ViewAttached, event_position, restore_display_mode
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -417,11 +417,7 @@ def hide(obj=None):
         if node is None:
             continue
         node.detach()
-        mode = _saved_modes.pop(key, None)
-        doc = FreeCAD.listDocuments().get(key[0])
-        target = doc.getObject(key[1]) if doc is not None else None
-        if mode is not None and target is not None and getattr(target, "ViewObject", None) is not None:
-            target.ViewObject.DisplayMode = mode
+        restore_display_mode(_saved_modes, key)
     _refresh_legends()
 
 

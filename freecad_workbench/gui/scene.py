@@ -1,5 +1,6 @@
 """Coin drawings shown in 3D views beside the document's own: the one place that adds a
 drawing's root to views' scene graphs and takes it out again. GUI only."""
+import FreeCAD
 
 
 class ViewAttached:
@@ -31,3 +32,13 @@ def event_position(event):
     FreeCAD 1.1) returns a bare pointer from SbVec2s.getValue(), older pivy a list."""
     position = event.getPosition()
     return int(position[0]), int(position[1])
+
+
+def restore_display_mode(saved_modes, key):
+    """Give the object named by key (document name, object name) back the display mode
+    saved for it in saved_modes (and forget it), if both are still there."""
+    mode = saved_modes.pop(key, None)
+    doc = FreeCAD.listDocuments().get(key[0])
+    target = doc.getObject(key[1]) if doc is not None else None
+    if mode is not None and target is not None and getattr(target, "ViewObject", None) is not None:
+        target.ViewObject.DisplayMode = mode

@@ -17,7 +17,7 @@ import numpy as np
 
 import FreeCAD
 
-from .scene import ViewAttached
+from .scene import ViewAttached, restore_display_mode
 
 DEFLECTION = 2e-4  # of the shape's diagonal
 SPLIT = 0.02  # no triangle edge longer than this part of the shape's diagonal
@@ -213,11 +213,7 @@ def hide(obj=None):
         if node is None:
             continue
         node.detach()
-        mode = _saved_modes.pop(key, None)
-        doc = FreeCAD.listDocuments().get(key[0])
-        target = doc.getObject(key[1]) if doc is not None else None
-        if mode is not None and target is not None:
-            target.ViewObject.DisplayMode = mode
+        restore_display_mode(_saved_modes, key)
 
 
 def shown():
