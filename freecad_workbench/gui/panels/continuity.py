@@ -6,7 +6,7 @@ import FreeCAD
 import FreeCADGui
 
 from .. import continuity, icon_path
-from .form import SPIN_MAX_WIDTH, compact, form_rows, new_form, short_spin_box, wrapped_label
+from .form import SPIN_MAX_WIDTH, compact, form_rows, new_form, short_spin_box, standard_buttons, wrapped_label
 
 translate = FreeCAD.Qt.translate
 
@@ -142,8 +142,7 @@ class ContinuityTaskPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        buttons = QtWidgets.QDialogButtonBox.Close
-        return buttons.value if hasattr(buttons, "value") else int(buttons)
+        return standard_buttons(QtWidgets.QDialogButtonBox.Close)
 
     def accept(self):
         return self.reject()

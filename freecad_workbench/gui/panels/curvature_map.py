@@ -7,7 +7,7 @@ import FreeCAD
 import FreeCADGui
 
 from .. import curvature_map, icon_path
-from .form import SPIN_MAX_WIDTH, compact, form_rows, new_form, short_spin_box, wrapped_label
+from .form import SPIN_MAX_WIDTH, compact, form_rows, new_form, short_spin_box, standard_buttons, wrapped_label
 
 translate = FreeCAD.Qt.translate
 
@@ -146,8 +146,7 @@ class CurvatureMapTaskPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        buttons = QtWidgets.QDialogButtonBox.Close
-        return buttons.value if hasattr(buttons, "value") else int(buttons)
+        return standard_buttons(QtWidgets.QDialogButtonBox.Close)
 
     def reject(self):
         self.close()

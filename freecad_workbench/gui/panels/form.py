@@ -79,6 +79,12 @@ def short_spin_box():
     return _SHORT_SPIN_BOX[0]()
 
 
+def standard_buttons(buttons):
+    """A task panel's getStandardButtons value: PySide2's flags convert with int(); PySide6's
+    are Python enum flags, with .value."""
+    return buttons.value if hasattr(buttons, "value") else int(buttons)
+
+
 def button_column(*widgets):
     """Buttons (or check boxes) one under the other: two side by side need 166 px or more
     with Qt6's Fusion style (80 px a button at least), too much beside a form's margins."""
@@ -230,9 +236,7 @@ class LiveEditPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        buttons = QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel
-        # PySide2's flags convert with int(); PySide6's are Python enum flags, with .value.
-        return buttons.value if hasattr(buttons, "value") else int(buttons)
+        return standard_buttons(QtWidgets.QDialogButtonBox.Ok | QtWidgets.QDialogButtonBox.Cancel)
 
     def accept(self):
         self.session.commit()

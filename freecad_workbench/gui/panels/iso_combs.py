@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 from .. import icon_path
-from .form import compact, form_rows, new_form
+from .form import compact, form_rows, new_form, standard_buttons
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -75,8 +75,7 @@ class IsoCombsTaskPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        buttons = QtWidgets.QDialogButtonBox.Close
-        return buttons.value if hasattr(buttons, "value") else int(buttons)
+        return standard_buttons(QtWidgets.QDialogButtonBox.Close)
 
     def accept(self):
         return self.reject()

@@ -5,7 +5,7 @@ import FreeCAD
 import FreeCADGui
 
 from .. import icon_path, zebra_shape
-from .form import button_column, compact, form_rows, new_form
+from .form import button_column, compact, form_rows, new_form, standard_buttons
 
 translate = FreeCAD.Qt.translate
 
@@ -117,8 +117,7 @@ class ZebraTaskPanel:
     def getStandardButtons(self):
         from ..qt import QtWidgets
 
-        buttons = QtWidgets.QDialogButtonBox.Close
-        return buttons.value if hasattr(buttons, "value") else int(buttons)
+        return standard_buttons(QtWidgets.QDialogButtonBox.Close)
 
     def accept(self):
         self.close()
