@@ -35,6 +35,8 @@ PREFERENCES = {
         Preference("CombSamples", int, 256, 8, 100000, "", "Int", "Curvature comb teeth per edge (at least)"),
         Preference("CombCommonScale", bool, False, None, None, "", "Bool",
                    "One scale for all combs shown, so tooth lengths compare between curves"),
+        Preference("CombTorsion", bool, False, None, None, "", "Bool",
+                   "Space curves get a second comb, of torsion along the binormal, so a torsion flip shows"),
         Preference("ZebraStripes", int, 16, 1, 256, "", "Int",
                    "Black and white stripe pairs a new zebra shading reflects"),
         # Stored as a string: FreeCAD 0.20 writes a Float parameter with 12 decimals

@@ -5,6 +5,7 @@ section shows them. Run under a virtual display:
     xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR] [--surface]
 
 --surface: only the surface analysis pictures (curvature map, continuity check, zebra).
+--torsion: only the fair blend in space with its curvature and torsion combs.
 
 OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
 import math
@@ -181,6 +182,7 @@ def main(out):
     grab(out, "curvature_plot_tab")
     plot.close_plot_tabs()
     comb.hide()
+    torsion_comb(out)
     surface_analysis(out)
 
 
@@ -264,6 +266,39 @@ def surface_analysis(out):
     settle()
 
 
+def torsion_comb(out):
+    """A G2 fair blend between a line and a helix end that share no plane, with the comb
+    panel open and its torsion comb on."""
+    import FreeCADGui
+    import Part
+
+    from freecad_workbench.features.fair_blend import make_fair_blend
+    from freecad_workbench.gui import comb
+    from freecad_workbench.gui.panels.comb import CombTaskPanel
+
+    V = FreeCAD.Vector
+    doc = new_doc("SpaceBlend")
+    line = doc.addObject("Part::Feature", "Line")
+    line.Shape = Part.LineSegment(V(-40, 0, 0), V(0, 0, 0)).toShape()
+    helix = doc.addObject("Part::Feature", "Helix")
+    helix.Shape = Part.makeHelix(30.0, 45.0, 12.0)
+    helix.Placement.Base = V(40, 25, 10)
+    doc.recompute()
+    blend = make_fair_blend(doc, (line, "Edge1"), (helix, "Edge1"), start_end="last", end_end="first")
+    saved = comb.torsion_shown()
+    comb.set_style(torsion=True)
+    comb.show(blend)
+    FreeCADGui.Selection.clearSelection()
+    panel = CombTaskPanel()
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    grab(out, "torsion_comb", "viewIsometric")
+    panel.reject()
+    comb.set_style(torsion=saved)
+    comb.hide()
+    settle()
+
+
 if __name__ == "__main__":
     ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
     OUT = ARGS[0] if ARGS else os.path.join(REPO, "docs", "gui")
@@ -271,6 +306,10 @@ if __name__ == "__main__":
         os.makedirs(OUT, exist_ok=True)
         start_gui()
         surface_analysis(OUT)
+    elif "--torsion" in sys.argv:  # only the torsion comb picture
+        os.makedirs(OUT, exist_ok=True)
+        start_gui()
+        torsion_comb(OUT)
     else:
         main(OUT)
     sys.stdout.flush()

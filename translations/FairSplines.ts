@@ -901,6 +901,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/comb.py"/>
+        <source>Space curves also get a comb of their torsion, in orange, along the binormal. Its teeth change sides where the curve&apos;s twist changes direction (a torsion sign change). Planar curves have none.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/features/blend_shape.py"/>
         <source>Sphere zone</source>
         <translation type="unfinished"></translation>
@@ -999,6 +1004,12 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>To compare: the paper&apos;s naive blend (Fig. 2a), the shape and the ring joined without the transition strip; its seams show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/comb.py"/>
+        <location filename="../freecad_workbench/gui/preferences.py"/>
+        <source>Torsion comb too</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -12,6 +12,14 @@ normal n and unit tangent t, i.e. the curvature vector, pointing to the centre o
 curvature; the comb changes sides where the curvature changes sign. For a space curve it
 is kappa times the principal normal. A negative scale draws the comb on the other side.
 
+Torsion (preference CombTorsion, off by default). A space curve also gets a second comb,
+in orange: tooth i is tau_i * b_i times a scale, with torsion tau = det(c', c'', c''') /
+|c' x c''|^2 and binormal b = c' x c'' / |c' x c''|, both from OCCT's derivatives of the
+curve. Its teeth change sides where the torsion changes sign, so a designer sees a torsion
+flip. Its automatic scale makes the longest tooth AUTO_LENGTH of the box's diagonal (there
+is no centre to stay short of), times the same scale factor. Planar curves (tau = 0) and
+straight stretches (no binormal) get no torsion teeth.
+
 Scale. A comb's automatic scale (`auto_scale`) is the largest that satisfies two rules:
 the longest tooth is at most AUTO_LENGTH (a quarter) of the diagonal of the box around
 the sampled curve points, and every tooth ends short of its centre of curvature. Tooth i
@@ -72,6 +80,16 @@ PROPERTY_GROUP = "FairSplines"
 
 TOOTH_COLOR = (0.35, 0.55, 1.0)
 ENVELOPE_COLOR = (0.0, 0.2, 0.85)
+TORSION_TOOTH_COLOR = (1.0, 0.6, 0.2)
+TORSION_ENVELOPE_COLOR = (0.85, 0.35, 0.0)
+
+
+def torsion_tooltip():
+    """The tooltip of the torsion switch (the comb panel and the preferences page)."""
+    return translate(
+        "FairSplines",
+        "Space curves also get a comb of their torsion, in orange, along the binormal. Its teeth change "
+        "sides where the curve's twist changes direction (a torsion sign change). Planar curves have none.")
 
 
 def as_bspline(edge):
@@ -122,6 +140,39 @@ def comb_lines(edge, scale=1.0, n=DEFAULT_SAMPLES):
     return Comb(base, tip, profile.kappa, profile.s)
 
 
+def torsion_lines(edge, scale=1.0, n=DEFAULT_SAMPLES):
+    """Torsion comb of an edge or curve (module docstring): tooth i goes from base[i] to
+    tip[i] = base[i] + scale * tau_i * b_i; Comb.kappa holds tau. Empty for a planar curve."""
+    curve = as_bspline(edge)
+    profile = curvature_profile(curve, n)
+    if profile.signed:  # planar: tau = 0 everywhere
+        return Comb(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0), np.zeros(0))
+    base = np.empty((len(profile.u), 3))
+    binormal = np.zeros((len(profile.u), 3))
+    tau = np.zeros(len(profile.u))
+    for i, u in enumerate(profile.u):
+        p, d1, d2 = curve.getD2(float(u))
+        d3 = curve.getDN(float(u), 3)
+        base[i] = (p.x, p.y, p.z)
+        d1, d2, d3 = (np.array((v.x, v.y, v.z)) for v in (d1, d2, d3))
+        cross = np.cross(d1, d2)
+        area = float(np.dot(cross, cross))
+        # |c' x c''| against its size scale |c'| |c''|: below 1e-9 the curve is straight there.
+        if area == 0.0 or area <= (1e-9 * np.linalg.norm(d1) * np.linalg.norm(d2)) ** 2:
+            continue
+        tau[i] = float(np.dot(cross, d3)) / area
+        binormal[i] = cross / math.sqrt(area)
+    tip = base + (scale * tau)[:, None] * binormal
+    return Comb(base, tip, tau, profile.s)
+
+
+def _torsion_automatic(unit_combs, diagonal):
+    """Scale of torsion combs drawn at scale 1: the longest tooth AUTO_LENGTH of the
+    diagonal; inf when there is no torsion."""
+    tau_max = max((float(np.max(np.abs(c.kappa))) for c in unit_combs if len(c.kappa)), default=0.0)
+    return AUTO_LENGTH * diagonal / tau_max if tau_max > 0.0 and diagonal > 0.0 else math.inf
+
+
 def auto_scale(edges, n=DEFAULT_SAMPLES):
     """Absolute scale for a comb of these edges: the largest that keeps the longest tooth
     within AUTO_LENGTH of the diagonal of their sampled points' bounding box and every
@@ -132,16 +183,21 @@ def auto_scale(edges, n=DEFAULT_SAMPLES):
 
 def _automatic(unit_combs):
     """auto_scale of combs drawn at scale 1; inf when there is no curvature to scale."""
-    # The box of the samples, not Shape.BoundBox: OCCT tightens that once the shape is
-    # tessellated, which would make the comb change size without its curve changing.
-    points = np.vstack([c.base for c in unit_combs]) if unit_combs else np.zeros((0, 3))
     kappa_max = max((float(np.max(np.abs(c.kappa))) for c in unit_combs if len(c.kappa)), default=0.0)
-    diagonal = float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
+    diagonal = _diagonal(unit_combs)
     if kappa_max == 0.0 or diagonal == 0.0:
         return math.inf
     # Longest tooth kappa_max * scale <= AUTO_LENGTH * diagonal, and for every tooth
     # |kappa_i| * scale <= REACH / |kappa_i| (its radius of curvature), the tightest at kappa_max.
     return min(AUTO_LENGTH * diagonal / kappa_max, REACH / kappa_max**2)
+
+
+def _diagonal(unit_combs):
+    """Diagonal of the box around the combs' base points."""
+    # The box of the samples, not Shape.BoundBox: OCCT tightens that once the shape is
+    # tessellated, which would make the comb change size without its curve changing.
+    points = np.vstack([c.base for c in unit_combs]) if unit_combs else np.zeros((0, 3))
+    return float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))) if len(points) else 0.0
 
 
 def scaled(comb, scale):
@@ -161,6 +217,11 @@ def edges_of(obj, sub=""):
 def get_style():
     """(scale factor, samples) from the preferences (freecad_workbench/preferences.py)."""
     return preferences.get("CombScale"), preferences.get("CombSamples")
+
+
+def torsion_shown():
+    """Whether space curves get a torsion comb too (preference CombTorsion)."""
+    return preferences.get("CombTorsion")
 
 
 def common_scale():
@@ -196,9 +257,13 @@ class _CombNode:
         self.group.addChild(self.coords)
         self.teeth = self._lines(coin, TOOTH_COLOR, 1.0)
         self.envelope = self._lines(coin, ENVELOPE_COLOR, 2.0)
+        self.torsion_teeth = self._lines(coin, TORSION_TOOTH_COLOR, 1.0)
+        self.torsion_envelope = self._lines(coin, TORSION_ENVELOPE_COLOR, 2.0)
         self.views = []
         self.unit = []  # the Comb of each edge at scale 1
         self.automatic = math.inf  # _automatic(self.unit)
+        self.torsion_unit = []  # the torsion Comb of each edge at scale 1 (none while CombTorsion is off)
+        self.torsion_automatic = math.inf  # _torsion_automatic(self.torsion_unit, ...)
 
     def _lines(self, coin, color, width):
         group = coin.SoSeparator()
@@ -223,27 +288,32 @@ class _CombNode:
         if self.root.whichChild.getValue() != value:
             self.root.whichChild = value
 
-    def update(self, combs):
-        """Draw these Comb tuples (one per edge)."""
-        points, teeth, envelope = [], [], []
+    def update(self, combs, torsion_combs=()):
+        """Draw these Comb tuples (one per edge), and the torsion combs."""
+        points = []
         offset = 0
-        for comb in combs:
-            n = len(comb.base)
-            points.append(comb.base)
-            points.append(comb.tip)
-            for i in range(n):
-                teeth += [offset + i, offset + n + i, -1]
-            envelope += list(range(offset + n, offset + 2 * n)) + [-1]
-            offset += 2 * n
+        for lines, envelope_lines, group in ((self.teeth, self.envelope, combs),
+                                             (self.torsion_teeth, self.torsion_envelope, torsion_combs)):
+            teeth, envelope = [], []
+            for comb in group:
+                n = len(comb.base)
+                if n == 0:
+                    continue
+                points.append(comb.base)
+                points.append(comb.tip)
+                for i in range(n):
+                    teeth += [offset + i, offset + n + i, -1]
+                envelope += list(range(offset + n, offset + 2 * n)) + [-1]
+                offset += 2 * n
+            lines.coordIndex.deleteValues(0)
+            envelope_lines.coordIndex.deleteValues(0)
+            if teeth:
+                lines.coordIndex.setValues(0, len(teeth), teeth)
+                envelope_lines.coordIndex.setValues(0, len(envelope), envelope)
         data = np.vstack(points).tolist() if points else []
         self.coords.point.deleteValues(0)
         if data:
             self.coords.point.setValues(0, len(data), data)
-        self.teeth.coordIndex.deleteValues(0)
-        self.envelope.coordIndex.deleteValues(0)
-        if teeth:
-            self.teeth.coordIndex.setValues(0, len(teeth), teeth)
-            self.envelope.coordIndex.setValues(0, len(envelope), envelope)
 
     def attach(self, views):
         for view in views:
@@ -289,11 +359,13 @@ def _visible(obj):
 
 
 def _unit(key):
-    """The combs at scale 1 of the edges of a key's object (or of its one edge)."""
+    """The curvature and torsion combs (the latter empty while CombTorsion is off) at
+    scale 1 of the edges of a key's object (or of its one edge)."""
     obj = _object(key)
     edges = edges_of(obj, key[2]) if obj is not None else []
     samples = get_style()[1]
-    return [comb_lines(edge, 1.0, samples) for edge in edges]
+    torsion = [torsion_lines(edge, 1.0, samples) for edge in edges] if torsion_shown() else []
+    return [comb_lines(edge, 1.0, samples) for edge in edges], torsion
 
 
 def _common_automatic(doc_name):
@@ -320,7 +392,9 @@ def _draw(keys=None):
             automatic = node.automatic
         if math.isinf(automatic):  # straight: nothing to scale
             automatic = 1.0
-        node.update([scaled(c, factor * automatic) for c in node.unit])
+        twist = 1.0 if math.isinf(node.torsion_automatic) else node.torsion_automatic
+        node.update([scaled(c, factor * automatic) for c in node.unit],
+                    [scaled(c, factor * twist) for c in node.torsion_unit])
 
 
 def shown():
@@ -388,25 +462,28 @@ def toggle(links):
     return True
 
 
-def set_style(scale=None, samples=None, common=None):
-    """Store a new scale factor, sample count and/or common scale (bool) and redraw
-    every comb."""
+def set_style(scale=None, samples=None, common=None, torsion=None):
+    """Store a new scale factor, sample count, common scale (bool) and/or torsion comb
+    (bool) and redraw every comb."""
     if scale is not None:
         preferences.set_value("CombScale", float(scale))
     if samples is not None:
         preferences.set_value("CombSamples", int(samples))
     if common is not None:
         preferences.set_value("CombCommonScale", bool(common))
+    if torsion is not None:
+        preferences.set_value("CombTorsion", bool(torsion))
     refresh()
 
 
 def _recompute(node):
     try:
-        node.unit = _unit(node.key)
+        node.unit, node.torsion_unit = _unit(node.key)
     except Exception as exc:  # a broken shape must not break the recompute
         FreeCAD.Console.PrintWarning(f"Curvature comb of {node.key[1]}: {exc}\n")
-        node.unit = []
+        node.unit, node.torsion_unit = [], []
     node.automatic = _automatic(node.unit)
+    node.torsion_automatic = _torsion_automatic(node.torsion_unit, _diagonal(node.unit))
 
 
 def refresh(keys=None):

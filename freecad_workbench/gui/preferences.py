@@ -16,6 +16,7 @@ import FreeCAD
 
 from .. import preferences
 from . import icon_path
+from . import comb as comb_texts
 
 translate = FreeCAD.Qt.translate
 
@@ -142,6 +143,7 @@ class PreferencePage:
             "FairSplines",
             "On: every comb shown is drawn to one scale, the smallest any of them would get on its own, "
             "so tooth lengths compare between curves. Off: each comb is sized to its own curve."))
+        self._bool(rows, "CombTorsion", translate("FairSplines", "Torsion comb too"), comb_texts.torsion_tooltip())
 
         rows = self._group(layout, translate("FairSplines", "Zebra"))
         self._int(rows, "ZebraStripes", translate("FairSplines", "Stripe pairs"), translate(

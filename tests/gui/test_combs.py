@@ -20,7 +20,7 @@ from freecad_workbench import preferences
 from freecad_workbench.gui import comb
 
 V = FreeCAD.Vector
-STYLE_KEYS = ("CombScale", "CombSamples", "CombCommonScale")
+STYLE_KEYS = ("CombScale", "CombSamples", "CombCommonScale", "CombTorsion")
 
 
 def run(name):
@@ -370,3 +370,93 @@ def test_view_property_toggles_the_comb_and_is_saved_with_the_document(scene, tm
     finally:
         comb.hide()
         FreeCAD.closeDocument(reopened.Name)
+
+
+def torsion_teeth(node):
+    """(base, tip) arrays of the torsion teeth a comb node draws."""
+    coords = np.array([tuple(p.getValue()) for p in node.coords.point])
+    index = np.array(node.torsion_teeth.coordIndex.getValues(), dtype=int).reshape(-1, 3)
+    return coords[index[:, 0]], coords[index[:, 1]]
+
+
+def occt_binormal(edge, point):
+    """OCCT's binormal tangent x principal normal at the edge's point nearest to point."""
+    curve = edge.Curve
+    u = curve.parameter(V(*point))
+    t, n = curve.tangent(u)[0], curve.normal(u)
+    return np.array(tuple(t.cross(n)))
+
+
+def test_torsion_comb_of_a_helix_stands_on_the_binormal_at_the_helix_torsion(scene):
+    """Issue 28: the comb shows torsion when asked. A helix of radius r and pitch 2 pi c
+    has torsion c / (r^2 + c^2) everywhere, positive when it turns right-handed: every
+    torsion tooth lies along OCCT's binormal, on its side for the right-handed helix and
+    on the other for the left-handed one, all the same length (the longest is a quarter
+    of the comb's box diagonal)."""
+    from freecad_workbench.gui.panels.comb import active_comb_panel
+
+    doc = scene
+    r, c = 10.0, 3.0
+    right = feature(doc, "Right", [Part.makeHelix(2 * math.pi * c, 4 * math.pi * c, r).Edges[0]])
+    left = feature(doc, "Left", [Part.makeHelix(2 * math.pi * c, 4 * math.pi * c, r, 0, True).Edges[0]])
+    left.Placement.Base = V(40, 0, 0)
+    arc = half_circle(doc, "Arc", 5.0, (0, -30, 0))
+    doc.recompute()
+    select(doc, right, left, arc)
+    run("FairSplines_CurvatureComb")
+    nodes = {obj.Name: comb._combs[(doc.Name, obj.Name, "")] for obj in (right, left, arc)}
+    for node in nodes.values():  # off by default
+        assert len(node.torsion_teeth.coordIndex.getValues()) == 0
+
+    panel = active_comb_panel()
+    assert not panel.torsion.isChecked()
+    panel.torsion.setChecked(True)
+    assert preferences.get("CombTorsion") is True
+    tau = c / (r * r + c * c)
+    for obj, sign in ((right, 1.0), (left, -1.0)):
+        base, tip = torsion_teeth(nodes[obj.Name])
+        assert len(base) > 100
+        tooth = tip - base
+        length = np.linalg.norm(tooth, axis=1)
+        # Constant torsion, to the accuracy of OCCT's B-spline approximation of the helix
+        # (Part.makeHelix: its torsion varies by 6.5e-4 relatively).
+        np.testing.assert_allclose(length, length.max(), rtol=2e-3)
+        diagonal = np.linalg.norm(base.max(axis=0) - base.min(axis=0))
+        assert length.max() == pytest.approx(comb.AUTO_LENGTH * diagonal, rel=1e-6)  # coin keeps floats
+        edge = obj.Shape.Edges[0]
+        for b, d in zip(base, tooth):
+            binormal = occt_binormal(edge, b)
+            assert np.dot(d, binormal) == pytest.approx(sign * np.linalg.norm(d), rel=1e-6)
+        assert tau > 0
+    base, _ = torsion_teeth(nodes[arc.Name])  # planar: no torsion teeth
+    assert len(base) == 0
+
+    panel.reject()  # Cancel: off again
+    assert preferences.get("CombTorsion") is False
+    assert len(nodes[right.Name].torsion_teeth.coordIndex.getValues()) == 0
+
+
+def test_torsion_comb_changes_sides_where_the_torsion_changes_sign(scene):
+    """The quartic c(t) = (t, t^2, t^4), t in [-1, 1], has det(c', c'', c''') = 48 t: its
+    torsion is negative for t < 0 and positive for t > 0. Built as an exact Bezier curve
+    (the degree-4 polynomial interpolated at 5 points), its torsion teeth point against
+    OCCT's binormal before x = 0 and along it after."""
+    doc = scene
+    t = np.linspace(-1.0, 1.0, 5)
+    points = np.column_stack([t, t**2, t**4]) * 20.0
+    bernstein = np.array([[math.comb(4, k) * ((s + 1) / 2) ** k * ((1 - s) / 2) ** (4 - k) for k in range(5)]
+                          for s in t])
+    poles = np.linalg.solve(bernstein, points)
+    bezier = Part.BezierCurve()
+    bezier.setPoles([V(*p) for p in poles])
+    assert (bezier.value(0.75) - V(10, 5, 1.25)).Length < 1e-9  # t = 0.5
+    quartic = feature(doc, "Quartic", [bezier.toShape()])
+    doc.recompute()
+    comb.set_style(torsion=True)
+    node = comb.show(quartic)
+    base, tip = torsion_teeth(node)
+    edge = quartic.Shape.Edges[0]
+    signs = np.array([np.sign(np.dot(d, occt_binormal(edge, b))) for b, d in zip(base, tip - base)])
+    x = base[:, 0]
+    assert (signs[x < -1.0] == -1).all() and (signs[x > 1.0] == 1).all()
+    assert (x < -1.0).sum() > 50 and (x > 1.0).sum() > 50

@@ -14,7 +14,8 @@ from freecad_workbench.gui import preferences as page_module
 
 # Values unlike every default, one per preference.
 USER_VALUES = {
-    "CombScale": -2.5, "CombSamples": 300, "CombCommonScale": True, "ZebraStripes": 24,
+    "CombScale": -2.5, "CombSamples": 300, "CombCommonScale": True, "CombTorsion": True,
+    "ZebraStripes": 24,
     "CsrEpsilon": 2.5e-12, "JoinTolerance": 0.02, "PlotSamples": 2048,
 }
 # The group icon differs from the workbench icon drawn at the same size by less than this

@@ -96,7 +96,8 @@ def test_defaults_are_the_ones_the_modules_used_before():
     for key in preferences.PREFERENCES:
         preferences.reset(key)
     assert preferences.values() == {
-        "CombScale": 1.0, "CombSamples": 256, "CombCommonScale": False, "ZebraStripes": 16,
+        "CombScale": 1.0, "CombSamples": 256, "CombCommonScale": False, "CombTorsion": False,
+        "ZebraStripes": 16,
         "CsrEpsilon": 1e-9, "JoinTolerance": 1e-6, "PlotSamples": 1024,
     }
     assert not any(preferences.is_set(key) for key in preferences.PREFERENCES)

@@ -1,5 +1,5 @@
-"""Task panel of the curvature combs: scale, number of teeth and one scale for all combs,
-applied while you edit them. Cancel restores the values the panel opened with."""
+"""Task panel of the curvature combs: scale, number of teeth, one scale for all combs and
+the torsion comb of space curves, applied while you edit them. Cancel restores the values the panel opened with."""
 import FreeCAD
 import FreeCADGui
 
@@ -22,7 +22,7 @@ class CombTaskPanel:
 
         global _panel
         _panel = self
-        self.initial = (*comb.get_style(), comb.common_scale())
+        self.initial = (*comb.get_style(), comb.common_scale(), comb.torsion_shown())
         self.form, layout = new_form(translate("FairSplines", "Curvature comb"), icon_path("FairSplines_CurvatureComb"))
         rows = form_rows()
         self.scale = QtWidgets.QDoubleSpinBox()
@@ -45,17 +45,22 @@ class CombTaskPanel:
             "FairSplines",
             "On: every comb shown is drawn to one scale, the smallest any of them would get on its own, "
             "so tooth lengths compare between curves. Off: each comb is sized to its own curve."))
+        self.torsion = QtWidgets.QCheckBox(translate("FairSplines", "Torsion comb too"))
+        self.torsion.setChecked(self.initial[3])
+        self.torsion.setToolTip(comb.torsion_tooltip())
         rows.addRow(translate("FairSplines", "Scale"), self.scale)
         rows.addRow(translate("FairSplines", "Teeth"), self.samples)
         rows.addRow(self.common)
+        rows.addRow(self.torsion)
         layout.addLayout(rows)
         layout.addStretch(1)
         self.scale.valueChanged.connect(self.apply)
         self.samples.valueChanged.connect(self.apply)
         self.common.toggled.connect(self.apply)
+        self.torsion.toggled.connect(self.apply)
 
     def apply(self, *_):
-        comb.set_style(self.scale.value(), self.samples.value(), self.common.isChecked())
+        comb.set_style(self.scale.value(), self.samples.value(), self.common.isChecked(), self.torsion.isChecked())
 
     def accept(self):
         self.apply()
