@@ -59,6 +59,7 @@ import Part
 
 from .. import preferences
 from ..analysis import curvature_profile
+from .scene import set_values
 
 translate = FreeCAD.Qt.translate
 
@@ -310,10 +311,7 @@ class _CombNode:
             if teeth:
                 lines.coordIndex.setValues(0, len(teeth), teeth)
                 envelope_lines.coordIndex.setValues(0, len(envelope), envelope)
-        data = np.vstack(points).tolist() if points else []
-        self.coords.point.deleteValues(0)
-        if data:
-            self.coords.point.setValues(0, len(data), data)
+        set_values(self.coords.point, np.vstack(points) if points else np.zeros((0, 3)))
 
     def attach(self, views):
         for view in views:

@@ -19,7 +19,7 @@ import numpy as np
 
 import FreeCAD
 
-from .scene import ViewAttached, event_position, restore_display_mode
+from .scene import ViewAttached, event_position, restore_display_mode, set_values
 
 translate = FreeCAD.Qt.translate
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
@@ -57,9 +57,8 @@ def colours(values, lower, upper):
     span = upper - lower
     t = np.clip((values - lower) / span, 0.0, 1.0) if span > 0 else np.full(values.shape, 0.5)
     x = t * (len(STOPS) - 1)
-    i = np.minimum(x.astype(int), len(STOPS) - 2)
-    f = (x - i)[:, None]
-    return STOPS[i] * (1.0 - f) + STOPS[i + 1] * f
+    stop = np.arange(len(STOPS))
+    return np.column_stack([np.interp(x, stop, STOPS[:, c]) for c in range(3)])
 
 
 def auto_range(values):
@@ -194,6 +193,7 @@ class CurvatureMapNode(ViewAttached):
         self.obj, self.faces = obj, tuple(faces)  # faces: element names, () for all
         self.quantity = "mean"
         self.manual = None  # (lower, upper) or None for the automatic range
+        self.deflection = None  # fw.curvature_map's: None for its default
         self.data = None  # fw.CurvatureMap
         self.error = ""
         self.mask = None  # vertices of the faces asked for (None: all)
@@ -234,7 +234,7 @@ class CurvatureMapNode(ViewAttached):
 
         self.error = ""
         try:
-            self.data = fw.curvature_map(_global_shape(self.obj), self.quantity)
+            self.data = fw.curvature_map(_global_shape(self.obj), self.quantity, deflection=self.deflection)
         except (ValueError, RuntimeError, AttributeError) as exc:  # fw.InputError is a ValueError
             self.error = str(exc)
             self.data = None
@@ -247,14 +247,10 @@ class CurvatureMapNode(ViewAttached):
             on_triangle = np.isin(self.data.face, wanted)
             self.mask = np.zeros(len(self.data.points), dtype=bool)
             self.mask[self.data.triangles[on_triangle].ravel()] = True
-        points = self.data.points
-        index = np.c_[self.data.triangles, -np.ones(len(self.data.triangles), dtype=int)].ravel().tolist()
-        self.coords.point.deleteValues(0)
-        self.coords.point.setValues(0, len(points), points.tolist())
-        self.mesh.coordIndex.deleteValues(0)
-        self.mesh.coordIndex.setValues(0, len(index), index)
-        self.mesh.materialIndex.deleteValues(0)
-        self.mesh.materialIndex.setValues(0, len(index), index)
+        index = np.c_[self.data.triangles, -np.ones(len(self.data.triangles), dtype=int)].ravel()
+        set_values(self.coords.point, self.data.points)
+        set_values(self.mesh.coordIndex, index, np.int32)
+        set_values(self.mesh.materialIndex, index, np.int32)
         self.recolour()
 
     def recolour(self):
@@ -265,8 +261,7 @@ class CurvatureMapNode(ViewAttached):
         rgb = colours(self.data.values, lower, upper)
         if self.mask is not None:
             rgb[~self.mask] = OTHER_FACES
-        self.material.diffuseColor.deleteValues(0)
-        self.material.diffuseColor.setValues(0, len(rgb), rgb.tolist())
+        set_values(self.material.diffuseColor, rgb)
 
     def vertex_colours(self):
         """(points (n, 3), colours (n, 3)) as the coin nodes hold them."""

@@ -1,5 +1,8 @@
 """Coin drawings shown in 3D views beside the document's own: the one place that adds a
-drawing's root to views' scene graphs and takes it out again. GUI only."""
+drawing's root to views' scene graphs and takes it out again, and fills their fields from
+numpy arrays. GUI only."""
+import numpy as np
+
 import FreeCAD
 
 
@@ -25,6 +28,17 @@ class ViewAttached:
             except Exception:  # the view was closed
                 pass
         self.views = []
+
+
+def set_values(field, values, dtype=np.float32):
+    """Replace the values of a coin multiple-value field (points, colours, vectors: float32;
+    indices: pass dtype=np.int32) with the rows of an array. pivy takes the numpy array itself
+    (FreeCAD 0.20, 1.0 and 1.1 alike), 5-7 times faster than a Python list: 10^5 colours in
+    about 45 ms against 330 ms (bench/bench_surface_analysis.py, map recolour)."""
+    array = np.ascontiguousarray(values, dtype=dtype)
+    field.deleteValues(0)
+    if len(array):
+        field.setValues(0, len(array), array)
 
 
 def event_position(event):

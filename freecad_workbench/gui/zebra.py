@@ -129,19 +129,23 @@ class ZebraNode:
         self.faces.normalIndex.deleteValues(0)
         self.vertex_count = 0
 
+    def set_mesh(self, points, normals, index):
+        """Draw this mesh: points and normals (n, 3), faces as coin's index list (-1 ends one)."""
+        from .scene import set_values
+
+        set_values(self.coords.point, points)
+        set_values(self.normals.vector, normals)
+        set_values(self.faces.coordIndex, index, np.int32)
+        set_values(self.faces.normalIndex, index, np.int32)
+        self.vertex_count = len(points)
+
     def update(self, surface):
         """Mesh `surface` (a Part surface), or clear the node for None."""
         if surface is None:
             self.clear()
             return
         points, normals, quads, _ = zebra_mesh(surface)
-        index = np.c_[quads, -np.ones(len(quads), dtype=int)].ravel().tolist()
-        self.clear()
-        self.coords.point.setValues(0, len(points), points.tolist())
-        self.normals.vector.setValues(0, len(normals), normals.tolist())
-        self.faces.coordIndex.setValues(0, len(index), index)
-        self.faces.normalIndex.setValues(0, len(index), index)
-        self.vertex_count = len(points)
+        self.set_mesh(points, normals, np.c_[quads, -np.ones(len(quads), dtype=int)].ravel())
 
 
 # Zebra mesh of each face of a shell (a patch): samples per face, at least 4 per knot span.
@@ -162,11 +166,4 @@ def update_zebra_faces(node, faces, samples=FACE_SAMPLES):
         normals.append(n)
         index.append(np.c_[quads + offset, -np.ones(len(quads), dtype=int)].ravel())
         offset += len(p)
-    points, normals = np.concatenate(points), np.concatenate(normals)
-    index = np.concatenate(index).tolist()
-    node.clear()
-    node.coords.point.setValues(0, len(points), points.tolist())
-    node.normals.vector.setValues(0, len(normals), normals.tolist())
-    node.faces.coordIndex.setValues(0, len(index), index)
-    node.faces.normalIndex.setValues(0, len(index), index)
-    node.vertex_count = len(points)
+    node.set_mesh(np.concatenate(points), np.concatenate(normals), np.concatenate(index))

@@ -129,15 +129,7 @@ class ShapeZebraNode(ViewAttached):
 
         self.mesh = shape_mesh(Part.getShape(self.obj))
         points, normals, triangles = self.mesh
-        index = np.c_[triangles, -np.ones(len(triangles), dtype=int)].ravel().tolist()
-        z = self.zebra
-        z.clear()
-        if len(points):
-            z.coords.point.setValues(0, len(points), points.tolist())
-            z.normals.vector.setValues(0, len(normals), normals.tolist())
-            z.faces.coordIndex.setValues(0, len(index), index)
-            z.faces.normalIndex.setValues(0, len(index), index)
-        z.vertex_count = len(points)
+        self.zebra.set_mesh(points, normals, np.c_[triangles, -np.ones(len(triangles), dtype=int)].ravel())
         self.restyle()
 
     def restyle(self):
