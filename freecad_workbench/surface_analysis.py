@@ -51,13 +51,14 @@ EdgeContinuity.__doc__ = (
     "curvature_jump_abs (1/length); the worst points (FreeCAD Vectors) and the edge's parameters there; samples: "
     "evaluations made."
 )
-CurvatureMap = namedtuple("CurvatureMap", "quantity points triangles values face face_ranges")
+CurvatureMap = namedtuple("CurvatureMap", "quantity points triangles values face face_ranges normals")
 CurvatureMap.__module__ = "freecad_workbench"
 CurvatureMap.__doc__ = (
     "A triangulation of a shape's faces coloured by a quantity: points (N, 3), triangles (M, 3) of point "
     "indices counter-clockwise about the face normal, values (N,) of the quantity (1/length, 1/length^2 for "
     "gaussian, length for radius), face (M,) the face (from 1, 'Face<i>') of each triangle, face_ranges "
-    "(faces, 2) the (min, max) of each face."
+    "(faces, 2) the (min, max) of each face, normals (N, 3) the face's unit normal at each point, evaluated "
+    "exactly (the face's orientation included; at a singular point, its neighbours' mean)."
 )
 
 
@@ -147,5 +148,6 @@ def curvature_map(shape: Any, quantity: str = "gaussian", deflection: Optional[f
     if f > 1.0:
         raise InputError(f"fraction must be at most 1, got {f:g}")
     levels = as_count(levels, "levels", 0, 8)
-    points, triangles, values, face, ranges = kernel.curvature_map(_brep(shape, "shape"), quantity, d, f, levels)
-    return CurvatureMap(quantity, points, triangles, values, face, ranges)
+    brep = _brep(shape, "shape")
+    points, triangles, values, face, ranges, normals = kernel.curvature_map(brep, quantity, d, f, levels)
+    return CurvatureMap(quantity, points, triangles, values, face, ranges, normals)

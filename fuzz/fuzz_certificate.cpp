@@ -1,5 +1,5 @@
-// The exact monotonicity certificate (certifyMonotoneCurvature) and the curvature variation
-// of arbitrary B-splines: degrees 1 to 7, polynomial or rational, clamped, unclamped or
+// The exact monotonicity certificates (certifyMonotoneCurvature, and certifySpaceCurvature
+// for space curves) and the curvature variation of arbitrary B-splines: degrees 1 to 7, polynomial or rational, clamped, unclamped or
 // periodic, in the plane, in a tilted plane or not planar; mostly well-formed (knots
 // increasing, multiplicities that fit the pole count), sometimes any structure at all.
 // For cubics also the derivative polygons (eqs. (3), (5)) and the per-segment conditions.
@@ -106,6 +106,26 @@ int fuzzOne(FuzzInput& in) {
     }
     if (!singular) requireFinite(call, "end curvature", Eigen::Vector2d(cert.kappaStart, cert.kappaEnd));
     if (cert.monotone && singular) fail(call, "monotone with a singular span");
+  }
+  // The space certificate (issue 28) of the same curve: planar or not, polynomial or rational.
+  SpaceCurvatureCertificate space;
+  if (guarded("certifySpaceCurvature", [&] { space = certifySpaceCurvature(curve, relTol); })) {
+    const char* call = "certifySpaceCurvature";
+    bool spaceSingular = false;
+    for (const SpaceSpanCertificate& s : space.spans) {
+      requireFinite(call, "span range", Eigen::Vector2d(s.u0, s.u1));
+      if (s.trend == CurvatureTrend::Singular) {
+        spaceSingular = true;
+        continue;
+      }
+      requireFinite(call, "span end curvature", Eigen::Vector2d(s.kappa0, s.kappa1));
+      requireFinite(call, "span 'at'", Eigen::Vector2d(s.at, s.kappaAt));
+      if (s.kappa0 < 0.0 || s.kappa1 < 0.0) fail(call, "a negative curvature");
+      for (double u : s.torsionChanges) requireFinite(call, "torsion change", u);
+    }
+    for (const auto& [u, kappa, maximum] : space.extrema) requireFinite(call, "extremum", Eigen::Vector2d(u, kappa));
+    for (double u : space.torsionSignChanges) requireFinite(call, "torsion sign change", u);
+    if (space.monotone && spaceSingular) fail(call, "monotone with a singular span");
   }
   double variation = 0.0;
   if (guarded("curvatureVariation", [&] { variation = curvatureVariation(curve); }) && !singular) {

@@ -347,6 +347,48 @@ seed("fuzz_fair_blend", "edge_backwards_chord",  # a slow one: the chord against
 seed("fuzz_fair_blend", "edge_curvature_inf", ends(Enc(), (0, 0), 1.0, 0.5, 0.0, 1.0, k=(INF, 1.0)))
 
 
+# --- fuzz_fair_blend_space -------------------------------------------------------------------
+
+def space_ends(e, p0, chord, chord_dir, dir0, dir1, K=None, shape=0, scale=None):
+    """Shaped ends: p0, the chord's length and direction (azimuth, elevation), unit tangents
+    of directions dir0, dir1; K = ((choice, azimuth, elevation, kappa), ...) for G2."""
+    e.choice(shape)
+    if scale is None:
+        e.byte(0)
+    else:
+        e.byte(255).number(scale)
+    e.numbers(p0).positive(chord).numbers(chord_dir)
+    e.byte(0).numbers(dir0).byte(0).numbers(dir1)
+    e.flag(K is not None)
+    for k in K or ():
+        e.choice(k[0])
+        if k[0] == 1:
+            e.number(k[1])
+        elif k[0] >= 3:
+            e.numbers(k[1:3]).byte(0).positive(k[3])
+    return e
+
+
+SPACE_SEEDS = {
+    "g1_two_lines_in_space": dict(p0=(0, 0, 0), chord=2.0, chord_dir=(0.5, 0.25), dir0=(0, 0), dir1=(1.5, 0.5)),
+    "g2_line_into_helix_end": dict(p0=(1, 2, 3), chord=3.0, chord_dir=(0.5, 0.5), dir0=(0, 0), dir1=(1.5, 0.25),
+                                   K=((0,), (3, 2.0, 1.0, 0.5))),
+    "g2_both_curved": dict(p0=(0, 0, 0), chord=2.0, chord_dir=(0.25, 0.5), dir0=(0, 0.25), dir1=(1.0, -0.5),
+                           K=((3, 1.0, 1.0, 0.5), (3, 2.0, -0.5, 1.0))),
+    "g2_coplanar_planar_path": dict(p0=(0, 0, 1), chord=2.0, chord_dir=(0.5, 0.0), dir0=(0, 0), dir1=(1.5, 0),
+                                    K=((3, 1.0, 0.0, 0.25), (3, 2.0, 0.0, 1.0)), shape=5),
+    "edge_curvature_along_tangent": dict(p0=(0, 0, 0), chord=1.0, chord_dir=(0.5, 0.5), dir0=(0, 0), dir1=(1.0, 0.5),
+                                         K=((1, 2.0), (0,))),
+    "edge_scale_1e300": dict(p0=(0, 0, 0), chord=1.0, chord_dir=(0.5, 0.5), dir0=(0, 0), dir1=(1.0, 0.5),
+                             K=((3, 1.0, 1.0, 0.5), (3, 2.0, -0.5, 1.0)), scale=1e300),
+}
+for name, args in SPACE_SEEDS.items():
+    seed("fuzz_fair_blend_space", name, space_ends(Enc(), **args))
+seed("fuzz_fair_blend_space", "edge_nan_tangent",
+     Enc().choice(6).numbers([0, 0, 0]).numbers([1, 1, 1]).numbers([NAN, 1, 0]).numbers([0, 1, 0])
+     .flag(False).flag(False))
+
+
 # --- fuzz_fair_fit ---------------------------------------------------------------------------
 
 def dense(e, n, radius, turn, noise65535, s_curve=False, dim=2, state=1):

@@ -70,10 +70,11 @@ void bindSurfaceAnalysis(py::module_& m) {
       [](const std::string& brep, const std::string& quantity, double deflection, double fraction, int levels) {
         const CurvatureMap c =
             curvatureMap(readBrepShape(brep), parseMapQuantity(quantity), deflection, fraction, levels);
-        return py::make_tuple(c.points, c.triangles, c.values, c.face, c.faceRanges);
+        return py::make_tuple(c.points, c.triangles, c.values, c.face, c.faceRanges, c.normals);
       },
       "brep"_a, "quantity"_a = "gaussian", "deflection"_a = 0.0, "fraction"_a = 0.05, "levels"_a = 3,
-      "(points, triangles, values, face of each triangle from 1, per-face (min, max)) of the BRep shape's faces.");
+      "(points, triangles, values, face of each triangle from 1, per-face (min, max), unit normals) of the BRep "
+      "shape's faces.");
 }
 
 }  // namespace fairsplines::python

@@ -62,22 +62,15 @@ def subdivide(points, triangles, limit, normals=None, rounds=8):
 
 def shape_mesh(shape, deflection=None):
     """(points (n, 3), normals (n, 3), triangles (m, 3)) of every face of a shape: the
-    triangulation of fw.curvature_map (fine, and finer where the surface bends fast), with
-    area-weighted vertex normals taken within each face only (the faces do not share
-    vertices there), so creases between faces stay sharp."""
+    triangulation of fw.curvature_map (fine, and finer where the surface bends fast) with
+    its normals, each face's own evaluated exactly at the vertex (the faces do not share
+    vertices there, so creases between faces stay sharp; the stripes follow the surface,
+    not the facets)."""
     import freecad_workbench as fw
 
     size = shape.BoundBox.DiagonalLength or 1.0
     mesh = fw.curvature_map(shape, "max_abs", deflection or DEFLECTION * size)
-    points, triangles = mesh.points, mesh.triangles
-    a, b, c = points[triangles[:, 0]], points[triangles[:, 1]], points[triangles[:, 2]]
-    area_normals = np.cross(b - a, c - a)  # counter-clockwise about the face normal
-    normals = np.zeros_like(points)
-    for k in range(3):
-        np.add.at(normals, triangles[:, k], area_normals)
-    length = np.linalg.norm(normals, axis=1)
-    normals[length > 0] /= length[length > 0][:, None]
-    points, triangles, normals = subdivide(points, triangles, SPLIT * size, normals)
+    points, triangles, normals = subdivide(mesh.points, mesh.triangles, SPLIT * size, mesh.normals)
     return points, normals, triangles
 
 

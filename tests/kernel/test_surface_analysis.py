@@ -463,6 +463,37 @@ def test_curvature_map_values_are_exact_and_refined_where_they_change_fast():
     assert fine.face_ranges.tolist() == [[fine.values.min(), fine.values.max()]] and set(fine.face) == {1}
 
 
+def test_curvature_map_normals_are_each_faces_own_exact_normal():
+    """The map's normals (zebra on any shape reflects them) are OCCT's Face.normalAt at the
+    vertex (to 1e-6 rad), face orientation included (a solid's reversed faces point out), on planes,
+    cylinders, tori and a reversed B-spline face; a cone's apex gets a finite unit normal."""
+    box = Part.makeBox(10, 8, 6)
+    solid = box.makeFillet(1.5, box.Edges)
+    patch = _reversed(Part.makeSphere(3.0, V(20, 0, 0)).Faces[0].toNurbs().Faces[0])
+    shape = Part.makeCompound([solid, patch])
+    faces = shape.Faces
+    assert any(f.Orientation == "Reversed" for f in faces)
+    m = fw.curvature_map(shape, "mean")
+    assert m.normals.shape == m.points.shape
+    np.testing.assert_allclose(np.linalg.norm(m.normals, axis=1), 1.0, atol=1e-12)
+    face_of_point = np.zeros(len(m.points), dtype=int)
+    face_of_point[m.triangles.ravel()] = np.repeat(m.face, 3)
+    checked = 0
+    for i in np.random.default_rng(5).choice(len(m.points), 300, replace=False):
+        face = faces[face_of_point[i] - 1]
+        u, v = face.Surface.parameter(V(*m.points[i]))
+        expected = np.array(tuple(face.normalAt(u, v)))
+        # 1e-6 rad: at a sphere's pole the normal is the limit from 1e-7 inside (2e-7 rad off).
+        assert np.dot(m.normals[i], expected) > math.cos(1e-6), (face_of_point[i], m.points[i], m.normals[i], expected)
+        checked += 1
+    assert checked == 300
+    outward = np.einsum("ij,ij->i", m.normals[face_of_point == len(faces)],
+                        m.points[face_of_point == len(faces)] - np.array([20.0, 0, 0]))
+    assert (outward < 0).all()  # the reversed sphere patch's normals point inwards
+    cone = fw.curvature_map(Part.makeCone(2.0, 0.0, 3.0), "max_abs")
+    np.testing.assert_allclose(np.linalg.norm(cone.normals, axis=1), 1.0, atol=1e-12)
+
+
 def test_curvature_map_radius_on_a_filleted_box_and_a_cone_apex_is_finite():
     box = Part.makeBox(10, 10, 10)
     solid = box.makeFillet(0.5, box.Edges[:4])

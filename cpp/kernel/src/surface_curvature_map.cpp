@@ -46,6 +46,7 @@ constexpr Eigen::Index kMaxTriangles = 4'000'000;  // bounds the refinement's wo
 struct FaceMesh {
   std::vector<double> u, v, value;
   std::vector<gp_Pnt> p;
+  std::vector<gp_Vec> n;       ///< the face's unit normal (orientation included; zero where singular)
   std::vector<char> singular;  ///< no curvature there (a cone's apex): the value is its neighbours' mean
   std::vector<std::array<int, 3>> triangles;
 };
@@ -92,22 +93,32 @@ void addVertex(FaceMesh& mesh, const detail::FaceSurface& surface, MapQuantity q
   mesh.u.push_back(u);
   mesh.v.push_back(v);
   mesh.p.push_back(p);
+  mesh.n.push_back(defined ? f.n : gp_Vec(0.0, 0.0, 0.0));
   mesh.value.push_back(value);
 }
 
-/// Singular vertices take the mean of their regular neighbours' values (0 without any).
+/// Singular vertices take the mean of their regular neighbours' values (0 without any) and
+/// the normalised mean of their normals (zero without any).
 void smoothSingular(FaceMesh& mesh) {
   std::vector<double> sum(mesh.value.size(), 0.0);
+  std::vector<gp_Vec> normals(mesh.value.size(), gp_Vec(0.0, 0.0, 0.0));
   std::vector<int> count(mesh.value.size(), 0);
   for (const auto& t : mesh.triangles) {
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) {
-        if (mesh.singular[t[a]] && !mesh.singular[t[b]]) sum[t[a]] += mesh.value[t[b]], ++count[t[a]];
+        if (mesh.singular[t[a]] && !mesh.singular[t[b]]) {
+          sum[t[a]] += mesh.value[t[b]];
+          normals[t[a]] += mesh.n[t[b]];
+          ++count[t[a]];
+        }
       }
     }
   }
   for (std::size_t i = 0; i < sum.size(); ++i) {
-    if (mesh.singular[i]) mesh.value[i] = count[i] > 0 ? sum[i] / count[i] : 0.0;
+    if (!mesh.singular[i]) continue;
+    mesh.value[i] = count[i] > 0 ? sum[i] / count[i] : 0.0;
+    const double length = normals[i].Magnitude();
+    mesh.n[i] = length > 0.0 ? normals[i] / length : gp_Vec(0.0, 0.0, 0.0);
   }
 }
 
@@ -248,6 +259,7 @@ CurvatureMap curvatureMap(const TopoDS_Shape& shape, MapQuantity quantity, doubl
   if (nTriangles == 0) throw InputError("the shape could not be meshed: no face has triangles");
   CurvatureMap out;
   out.points.resize(nPoints, 3);
+  out.normals.resize(nPoints, 3);
   out.values.resize(nPoints);
   out.triangles.resize(nTriangles, 3);
   out.face.resize(nTriangles);
@@ -257,6 +269,7 @@ CurvatureMap curvatureMap(const TopoDS_Shape& shape, MapQuantity quantity, doubl
     const FaceMesh& m = meshes[i];
     for (std::size_t j = 0; j < m.p.size(); ++j) {
       out.points.row(p0 + j) << m.p[j].X(), m.p[j].Y(), m.p[j].Z();
+      out.normals.row(p0 + j) << m.n[j].X(), m.n[j].Y(), m.n[j].Z();
       out.values[p0 + j] = m.value[j];
     }
     for (std::size_t j = 0; j < m.triangles.size(); ++j) {

@@ -94,6 +94,7 @@ MapQuantity parseMapQuantity(const std::string& name);
 /// A triangulation of the shape's faces with the quantity at every vertex.
 struct CurvatureMap {
   Eigen::MatrixX3d points;
+  Eigen::MatrixX3d normals;     ///< the face's unit normal at each vertex, exact (orientation included)
   Eigen::MatrixX3i triangles;   ///< rows of vertex indices (from 0), counter-clockwise about the face normal
   Eigen::VectorXd values;       ///< the quantity at each vertex
   Eigen::VectorXi face;         ///< the face (from 1) of each triangle
