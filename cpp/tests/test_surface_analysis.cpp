@@ -10,7 +10,11 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
 #include <GeomLProp_SLProps.hxx>
+#include <GeomConvert.hxx>
 #include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_SphericalSurface.hxx>
+#include <TopLoc_Location.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -22,6 +26,7 @@
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
+#include "surface_patches.hpp"
 
 using namespace fairsplines;
 
@@ -147,6 +152,72 @@ TEST(SurfaceAnalysis, BSplineMatchesGeomLPropWithTheSignConvention) {
       }
     }
   }
+}
+
+// The spans in power form (surface_patches.cpp) against OCCT's own D2 of the face, to rounding:
+// a rational B-spline of degrees (3, 2) on non-uniform knots moved by a location, the same
+// reversed, a sphere converted to a rational B-spline made periodic in u (points beyond its
+// range wrap), and a Bezier face; points inside, on knots and up to 10% outside the range.
+TEST(SurfaceAnalysis, PowerPatchesMatchOcctD2) {
+  TColgp_Array2OfPnt poles(1, 6, 1, 5);
+  TColStd_Array2OfReal weights(1, 6, 1, 5);
+  for (int i = 1; i <= 6; ++i) {
+    for (int j = 1; j <= 5; ++j) {
+      poles(i, j) = gp_Pnt(1.5 * i, j + 0.2 * i, 0.4 * std::sin(1.3 * i + 0.7 * j));
+      weights(i, j) = 1.0 + 0.3 * ((2 * i + j) % 4);
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, 4), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 4), vMults(1, 3);
+  uKnots(1) = 0.0, uKnots(2) = 0.3, uKnots(3) = 1.1, uKnots(4) = 2.0;  // 4 + 1 + 1 + 4 - 3 - 1 = 6 poles
+  uMults(1) = 4, uMults(2) = 1, uMults(3) = 1, uMults(4) = 4;
+  vKnots(1) = -1.0, vKnots(2) = 0.5, vKnots(3) = 3.0;  // 3 + 2 + 3 - 2 - 1 = 5 poles
+  vMults(1) = 3, vMults(2) = 2, vMults(3) = 3;
+  const Handle(Geom_BSplineSurface) rational =
+      new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 2);
+  gp_Trsf move;
+  move.SetRotation(gp_Ax1(gp_Pnt(1, 2, 3), gp_Dir(1, 1, 0)), 0.7);
+  move.SetTranslationPart(gp_Vec(5, -4, 2));
+  const TopoDS_Face moved = TopoDS::Face(BRepBuilderAPI_MakeFace(rational, 1e-7).Face().Moved(TopLoc_Location(move)));
+
+  Handle(Geom_BSplineSurface) sphere = GeomConvert::SurfaceToBSplineSurface(new Geom_SphericalSurface(gp_Ax3(), 2.0));
+  if (!sphere->IsUPeriodic()) sphere->SetUPeriodic();
+  ASSERT_TRUE(sphere->IsUPeriodic());
+  TColgp_Array2OfPnt bezierPoles(1, 3, 1, 4);
+  for (int i = 1; i <= 3; ++i)
+    for (int j = 1; j <= 4; ++j) bezierPoles(i, j) = gp_Pnt(i, j, 0.5 * ((i * j) % 3));
+  const Handle(Geom_BezierSurface) bezier = new Geom_BezierSurface(bezierPoles);
+
+  int checked = 0;
+  for (const TopoDS_Face& face : {moved, TopoDS::Face(moved.Reversed()), BRepBuilderAPI_MakeFace(sphere, 1e-7).Face(),
+                                  BRepBuilderAPI_MakeFace(bezier, 1e-7).Face()}) {
+    const std::unique_ptr<detail::PowerPatches> patches = detail::PowerPatches::of(face);
+    ASSERT_NE(patches, nullptr);
+    BRepAdaptor_Surface occt(face, false);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    for (int i = -1; i <= 11; ++i) {
+      for (int j = 0; j <= 10; ++j) {
+        // u from 10% before the range to 10% past it (a periodic surface wraps there); v
+        // inside, its knots included.
+        const double u = u0 + (u1 - u0) * (i + 0.05 * (i % 3)) / 10.0, v = v0 + (v1 - v0) * j / 10.0;
+        gp_Pnt p, q;
+        gp_Vec d[5], e[5];
+        patches->d2(u, v, p, d[0], d[1], d[2], d[3], d[4]);
+        occt.D2(u, v, q, e[0], e[1], e[2], e[3], e[4]);
+        double scale = gp_Vec(q.XYZ()).Magnitude() + 1.0;
+        for (const gp_Vec& x : e) scale = std::max(scale, x.Magnitude());
+        ASSERT_LT(p.Distance(q), 1e-12 * scale) << u << " " << v;
+        for (int k = 0; k < 5; ++k) ASSERT_LT((d[k] - e[k]).Magnitude(), 1e-11 * scale) << k << " at " << u << ", " << v;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 4 * 13 * 11);
+  // Degrees past kMaxDegree are left to OCCT.
+  TColgp_Array2OfPnt high(1, detail::PowerPatches::kMaxDegree + 2, 1, 2);
+  for (int i = 1; i <= high.UpperRow(); ++i) high(i, 1) = gp_Pnt(i, 0, i % 2), high(i, 2) = gp_Pnt(i, 1, 0);
+  EXPECT_EQ(detail::PowerPatches::of(BRepBuilderAPI_MakeFace(new Geom_BezierSurface(high), 1e-7).Face()), nullptr);
 }
 
 TEST(SurfaceAnalysis, BadUvIsRefused) {

@@ -1,7 +1,8 @@
 // Principal curvatures on any face (issue 27), vectorised over points: the shape operator
 // from the first and second fundamental forms (do Carmo, Differential Geometry of Curves
 // and Surfaces, §3-3, Prop. 3 and the expressions of K and H in the local coordinates).
-// OCCT evaluates the surface (BRepAdaptor_Surface::D2, the face's location applied).
+// OCCT evaluates the surface (BRepAdaptor_Surface::D2, the face's location applied), or for
+// B-spline and Bezier faces their spans in power form (surface_patches.cpp).
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -61,20 +62,18 @@ FaceSurface::FaceSurface(const TopoDS_Face& face) : surface_(face, false) {
   // here II is measured against the face normal n = sign (Su x Sv) (Face.normalAt's) with
   // the opposite sign, L = -Suu.n, so convex as seen from n is positive.
   sign = face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
-  if (surface_.GetType() == GeomAbs_BSplineSurface) {
-    const Handle(Geom_BSplineSurface) b = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));
-    if (!b.IsNull() && b->NbUKnots() * b->NbVKnots() > 4) {
-      face_ = face;
-      for (int i = 1; i <= b->NbUKnots(); ++i) uKnots_.push_back(b->UKnot(i));
-      for (int i = 1; i <= b->NbVKnots(); ++i) vKnots_.push_back(b->VKnot(i));
-      slots_.resize(std::min(kSpanSlots, (uKnots_.size() + 1) * (vKnots_.size() + 1)));
-    }
+  if (surface_.GetType() == GeomAbs_BSplineSurface || surface_.GetType() == GeomAbs_BezierSurface) {
+    patches_ = PowerPatches::of(face);
   }
 }
 
 bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   gp_Vec suu, svv, suv;
-  adaptor(u, v).D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
+  if (patches_) {
+    patches_->d2(u, v, f.p, f.su, f.sv, suu, svv, suv);
+  } else {
+    surface_.D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
+  }
   f.E = f.su.Dot(f.su);
   f.F = f.su.Dot(f.sv);
   f.G = f.sv.Dot(f.sv);
@@ -87,15 +86,6 @@ bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   f.M = -suv.Dot(f.n);
   f.N = -svv.Dot(f.n);
   return true;
-}
-
-const BRepAdaptor_Surface& FaceSurface::adaptor(double u, double v) const {
-  if (slots_.empty()) return surface_;
-  const std::size_t su = std::upper_bound(uKnots_.begin(), uKnots_.end(), u) - uKnots_.begin();
-  const std::size_t sv = std::upper_bound(vKnots_.begin(), vKnots_.end(), v) - vKnots_.begin();
-  std::unique_ptr<BRepAdaptor_Surface>& slot = slots_[(su * (vKnots_.size() + 1) + sv) % slots_.size()];
-  if (!slot) slot = std::make_unique<BRepAdaptor_Surface>(face_, false);
-  return *slot;
 }
 
 namespace {
