@@ -9,17 +9,17 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
-#include <GeomLProp_SLProps.hxx>
 #include <GeomConvert.hxx>
+#include <GeomLProp_SLProps.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
-#include <TopLoc_Location.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopExp.hxx>
+#include <TopLoc_Location.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <cmath>
@@ -208,7 +208,8 @@ TEST(SurfaceAnalysis, PowerPatchesMatchOcctD2) {
         double scale = gp_Vec(q.XYZ()).Magnitude() + 1.0;
         for (const gp_Vec& x : e) scale = std::max(scale, x.Magnitude());
         ASSERT_LT(p.Distance(q), 1e-12 * scale) << u << " " << v;
-        for (int k = 0; k < 5; ++k) ASSERT_LT((d[k] - e[k]).Magnitude(), 1e-11 * scale) << k << " at " << u << ", " << v;
+        for (int k = 0; k < 5; ++k)
+          ASSERT_LT((d[k] - e[k]).Magnitude(), 1e-11 * scale) << k << " at " << u << ", " << v;
         ++checked;
       }
     }

@@ -28,12 +28,12 @@ public:
   static constexpr int kMaxDegree = 7;
 
 private:
-  int p_ = 0, q_ = 0;                       ///< degrees in u and v
-  double uFirst_ = 0.0, vFirst_ = 0.0;      ///< the surface's first parameters
-  double uPeriod_ = 0.0, vPeriod_ = 0.0;    ///< periods of periodic directions (0: not periodic)
-  std::vector<double> uBreaks_;    ///< distinct knots in u (spans + 1)
-  std::vector<double> vBreaks_;    ///< distinct knots in v
-  std::vector<Eigen::Vector4d> a_;  ///< per span (u-major), (p + 1) x (q + 1) homogeneous power coefficients a_kl
+  int p_ = 0, q_ = 0;                     ///< degrees in u and v
+  double uFirst_ = 0.0, vFirst_ = 0.0;    ///< the surface's first parameters
+  double uPeriod_ = 0.0, vPeriod_ = 0.0;  ///< periods of periodic directions (0: not periodic)
+  std::vector<double> uBreaks_;           ///< distinct knots in u (spans + 1)
+  std::vector<double> vBreaks_;           ///< distinct knots in v
+  std::vector<Eigen::Vector4d> a_;        ///< per span (u-major), (p + 1) x (q + 1) homogeneous power coefficients a_kl
 };
 
 }  // namespace fairsplines::detail
