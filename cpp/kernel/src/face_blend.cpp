@@ -342,17 +342,19 @@ std::array<Vec4, 3> bezierJet(const Net& c, double s) {
   return out;
 }
 
-constexpr int kSamples = 96;
+constexpr int kSamples = 96;        // per section in the report
+constexpr int kSearchSamples = 48;  // per section in the fairness search
 
-/// Curvature of the rational section at kSamples + 1 points: sign changes of dkappa/ds, the
-/// scale-free variation L^3 int kappa_s^2 ds, and whether the section folds back on itself.
-Sampled sampleSection(const Net& c) {
+/// Curvature of the rational section at samples + 1 points (samples <= kSamples): sign changes
+/// of dkappa/ds, the scale-free variation L^3 int kappa_s^2 ds, and (selfApproach) whether the
+/// section comes back near itself.
+Sampled sampleSection(const Net& c, int samples, bool selfApproach) {
   std::array<double, kSamples + 1> kappa, arc;
   std::array<Vec3, kSamples + 1> points;
   double length = 0.0;
   Vec3 previous;
-  for (int i = 0; i <= kSamples; ++i) {
-    const double s = static_cast<double>(i) / kSamples;
+  for (int i = 0; i <= samples; ++i) {
+    const double s = static_cast<double>(i) / samples;
     const auto h = bezierJet(c, s);
     const double W = h[0][3], W1 = h[1][3], W2 = h[2][3];
     const Vec3 C = h[0].head<3>() / W;
@@ -366,15 +368,15 @@ Sampled sampleSection(const Net& c) {
     previous = C;
   }
   Sampled out;
-  out.kappaMin = *std::min_element(kappa.begin(), kappa.end());
-  out.kappaMax = *std::max_element(kappa.begin(), kappa.end());
+  out.kappaMin = *std::min_element(kappa.begin(), kappa.begin() + samples + 1);
+  out.kappaMax = *std::max_element(kappa.begin(), kappa.begin() + samples + 1);
   if (!std::isfinite(out.kappaMax) || !(length > 0)) {
     out.folded = true;
     return out;
   }
   const double flat = 1e-9 * std::max(out.kappaMax, 1.0 / length);
   int sign = 0;
-  for (int i = 1; i <= kSamples; ++i) {
+  for (int i = 1; i <= samples; ++i) {
     const double dk = kappa[i] - kappa[i - 1], ds = arc[i] - arc[i - 1];
     if (ds > 0) out.variation += dk * dk / ds;
     if (std::abs(dk) <= flat) continue;
@@ -384,9 +386,10 @@ Sampled sampleSection(const Net& c) {
   }
   out.variation *= length * length * length;
   // Self-approach: two samples far apart along the section but close in space.
-  const double step = length / kSamples;
-  for (int i = 0; i <= kSamples && !out.folded; ++i)
-    for (int j = i + 4; j <= kSamples; ++j) {
+  if (!selfApproach) return out;
+  const double step = length / samples;
+  for (int i = 0; i <= samples && !out.folded; ++i)
+    for (int j = i + 4; j <= samples; ++j) {
       if ((points[i] - points[j]).norm() < 0.25 * step) {
         out.folded = true;
         break;
@@ -447,7 +450,7 @@ struct Search {
     if (!positiveWeights(A, ma) || !positiveWeights(B, mb)) return std::numeric_limits<double>::infinity();
     double total = 0.0;
     for (const SectionData& d : sections) {
-      const Sampled s = sampleSection(sectionNet(d, ma, mb, n));
+      const Sampled s = sampleSection(sectionNet(d, ma, mb, n), kSearchSamples, false);
       if (s.folded) return std::numeric_limits<double>::infinity();
       total += 1000.0 * s.extrema + s.variation;
     }
@@ -647,7 +650,7 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
   out.sides[1] = b.report;
   for (const SectionData& d : sections) {
     const Net net = sectionNet(d, ma, mb, n);
-    const Sampled sampled = sampleSection(net);
+    const Sampled sampled = sampleSection(net, kSamples, true);
     if (sampled.folded) throw InputError("the blend would cross itself: its section at u = " + num(d.u) + " folds");
     FaceBlendSection section;
     section.u = d.u;
