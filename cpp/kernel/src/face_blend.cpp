@@ -320,26 +320,21 @@ Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb,
   return c;
 }
 
-/// Value and first two derivatives of a Bezier (rows of `c`) at s, by de Casteljau on the
-/// difference nets.
+/// Value and first two derivatives of a Bezier of degree n <= 5 (rows of `c`) at s, by de
+/// Casteljau: the last three levels give the derivatives (n (b1 - b0) and n (n - 1) (a2 - 2 a1 + a0)).
 std::array<Vec4, 3> bezierJet(const Net& c, double s) {
-  std::array<Vec4, 3> out;
-  Net net = c;
-  for (int order = 0; order < 3; ++order) {
-    const int n = static_cast<int>(net.rows()) - 1;
-    Net w = net;
-    for (int r = 1; r <= n; ++r)
-      for (int i = 0; i + r <= n; ++i) w.row(i) = (1 - s) * w.row(i) + s * w.row(i + 1);
-    out[order] = w.row(0).transpose();
-    if (n == 0) {
-      for (int k = order + 1; k < 3; ++k) out[k].setZero();
-      break;
-    }
-    Net d(n, 4);
-    for (int i = 0; i < n; ++i) d.row(i) = n * (net.row(i + 1) - net.row(i));
-    net = d;
+  const int n = static_cast<int>(c.rows()) - 1;
+  std::array<Vec4, 6> b;
+  for (int i = 0; i <= n; ++i) b[i] = c.row(i).transpose();
+  std::array<Vec4, 3> level2;  // the points of level n - 2
+  for (int r = 1; r <= n; ++r) {
+    if (r == n - 1)
+      for (int i = 0; i < 3; ++i) level2[i] = b[i];
+    for (int i = 0; i + r <= n; ++i) b[i] = (1 - s) * b[i] + s * b[i + 1];
   }
-  return out;
+  // Level n - 1 from level n - 2.
+  const Vec4 b0 = (1 - s) * level2[0] + s * level2[1], b1 = (1 - s) * level2[1] + s * level2[2];
+  return {b[0], n * (b1 - b0), n * (n - 1.0) * (level2[2] - 2.0 * level2[1] + level2[0])};
 }
 
 constexpr int kSamples = 96;        // per section in the report
