@@ -152,6 +152,22 @@ def test_plane_to_curved_bspline_face():
     assert report.sides[0]["surface_type"] == "Plane"
 
 
+def test_report_sections_agree_with_occt():
+    """A plane into a quarter cylinder turning the same way: every section's certified extremum
+    count is what OCCT's curvature along the section (uIso) shows, and it is the fewest such
+    ends admit here (one: a clothoid from 0 to 1/r turning 90 degrees is longer than the gap)."""
+    plane = Part.makePlane(2.0, 1.0, V(0, -1.0, 0))
+    edge_a = _edge_at(plane, lambda e: abs(e.CenterOfMass.y) < 1e-12 and e.Length > 1.9)
+    arc = Part.makeCircle(1.0, V(0, 0.2, 0.8), V(1, 0, 0), 0, 90)
+    quarter = arc.extrude(V(2, 0, 0)).Faces[0]
+    edge_b = _edge_at(quarter, lambda e: e.Curve.__class__.__name__ == "Line" and abs(e.CenterOfMass.y - 1.2) < 1e-9)
+    blend, report = fw.blend_faces(plane, edge_a, quarter, edge_b)
+    _check(blend, report)
+    for section in report.sections:
+        assert section["curvature_extrema"] == section["sampled_extrema"] == _section_extrema(blend, section["u"])
+    assert {s["curvature_extrema"] for s in report.sections} == {1}
+
+
 def test_sphere_to_cone():
     sphere = Part.makeSphere(1.0, V(0, 0, 0), V(0, 0, 1), -30, 30).Faces[0]
     cone = Part.makeCone(1.3, 0.9, 1.0, V(0, 0, 1.4)).Faces[0]
