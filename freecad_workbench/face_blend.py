@@ -89,8 +89,7 @@ def _side(face: Any, edge: Any, name: str) -> tuple[Any, int]:
         target = surface.value(0.5 * (u0 + u1), v0 if end == "start" else v1)
         for i, e in enumerate(part_face.Edges):
             if e.distToShape(Part.Vertex(target))[0] <= 1e-9 * max(1.0, part_face.BoundBox.DiagonalLength):
-                if not e.isClosed() or e.Curve.__class__.__name__ != "Line":
-                    return part_face, i + 1
+                return part_face, i + 1
         raise InputError(f"edge_{name}: the basic shape's {end} rim was not found")
     if not isinstance(face, Part.Shape) or face.isNull():
         raise InputError(f"face_{name} must be a Part face or a basic shape of fw.shapes, got {type(face).__name__}")
