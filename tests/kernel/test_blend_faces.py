@@ -90,8 +90,10 @@ def test_coaxial_cylinders_closed_rim_is_g2_exact_and_fair():
     blend, report = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0))
     _check(blend, report)
     assert all(side["method"] == "exact" and side["closed"] for side in report.sides)
-    # The blend closes around the axis.
+    # The blend closes around the axis, G2 across its own seam (the surface analysis's verdict).
     assert blend.value(0.0, 0.5).distanceToPoint(blend.value(1.0, 0.5)) < 1e-12
+    seam = [r for r in fw.edge_continuity(blend.toShape()) if r.kind == "seam"]
+    assert len(seam) == 1 and seam[0].continuity == "G2" and seam[0].curvature_jump < 1e-9, seam
     # Rotationally symmetric data: every section the same S between two straight generators, whose
     # unsigned curvature has the least possible extrema: 0, a maximum, 0 (the inflection), a maximum, 0.
     counts = {_section_extrema(blend, u) for u in (0.05, 0.31, 0.5, 0.77)}
