@@ -12,7 +12,8 @@
 // homogeneous coordinates after a reparametrisation, hence G2 (G1), exact to rounding along the
 // whole edge (section 2 of the doc has the formulas). alpha, beta are constants per side (a
 // polynomial in u would raise the u-degree) chosen for fairness of the cross sections: fewest
-// curvature extrema, then least curvature variation L^3 int kappa_s^2 ds (section 3).
+// curvature extrema, then least curvature variation L^3 int kappa_s^2 ds (section 3; the sections
+// and the search are in face_blend_fairness.cpp, shared through face_blend_detail.hpp).
 #include "fairsplines/face_blend.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -43,6 +44,7 @@
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/monotone.hpp"
+#include "face_blend_detail.hpp"
 #include "monotone_common.hpp"
 
 namespace fairsplines {
@@ -50,9 +52,7 @@ namespace fairsplines {
 namespace {
 
 using detail::num;
-using Vec3 = Eigen::Vector3d;
-using Vec4 = Eigen::Vector4d;
-using Rows = Eigen::Matrix<double, Eigen::Dynamic, 4>;  // homogeneous poles (w x, w y, w z, w)
+using namespace face_blend_detail;
 
 // ---------------------------------------------------------------------------------------
 // One side: the face's surface as a B-spline, u along the edge, the face at v >= v0
@@ -246,10 +246,6 @@ void commonBasis(Side& a, Side& b) {
 // ---------------------------------------------------------------------------------------
 // Homogeneous boundary rows: position, first and second cross-boundary derivative
 
-struct Boundary {
-  Rows r0, d1, d2;  // nu x 4 each, in the common u-basis
-};
-
 Vec4 homogeneous(const Handle(Geom_BSplineSurface)& s, int i, int j) {
   const gp_Pnt p = s->Pole(i, j);
   const double w = s->Weight(i, j);
@@ -278,122 +274,6 @@ Boundary boundaryRows(const Handle(Geom_BSplineSurface)& s) {
 }
 
 // ---------------------------------------------------------------------------------------
-// The blend's rows across: docs/FACE_BLENDS.md eq. (2.3)
-
-struct Magnitudes {
-  double alpha = 1.0, beta = 0.0;
-};
-
-/// Rows 0, 1 (, 2) of a Bezier of degree n in s matching the side to first (second) order under
-/// v(s) = v0 - alpha s + beta s^2 / 2:  B_s = -alpha P_v,  B_ss = alpha^2 P_vv + beta P_v.
-template <class R>
-std::array<R, 3> sideRows(const R& r0, const R& d1, const R& d2, const Magnitudes& m, int n) {
-  const R r1 = r0 - (m.alpha / n) * d1;
-  const R r2 = 2.0 * r1 - r0 + (m.alpha * m.alpha * d2 + m.beta * d1) / (n * (n - 1.0));
-  return {r0, r1, r2};
-}
-
-// ---------------------------------------------------------------------------------------
-// Cross sections: rational Bezier curves in s, judged by sampling and by the certificate
-
-struct SectionData {
-  double u = 0.0;
-  Vec4 a0, a1, a2, b0, b1, b2;  // the boundary rows of both sides at u
-};
-
-struct Sampled {
-  int extrema = 0;
-  double variation = 0.0, kappaMin = 0.0, kappaMax = 0.0;
-  bool folded = false;
-};
-
-using Net = Eigen::Matrix<double, Eigen::Dynamic, 4>;
-
-Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int n) {
-  Net c(n + 1, 4);
-  const auto ra = sideRows<Vec4>(d.a0, d.a1, d.a2, ma, n), rb = sideRows<Vec4>(d.b0, d.b1, d.b2, mb, n);
-  const int k = n == 5 ? 3 : 2;
-  for (int i = 0; i < k; ++i) {
-    c.row(i) = ra[i];
-    c.row(n - i) = rb[i];
-  }
-  return c;
-}
-
-/// Value and first two derivatives of a Bezier of degree n <= 5 (rows of `c`) at s, by de
-/// Casteljau: the last three levels give the derivatives (n (b1 - b0) and n (n - 1) (a2 - 2 a1 + a0)).
-std::array<Vec4, 3> bezierJet(const Net& c, double s) {
-  const int n = static_cast<int>(c.rows()) - 1;
-  std::array<Vec4, 6> b;
-  for (int i = 0; i <= n; ++i) b[i] = c.row(i).transpose();
-  std::array<Vec4, 3> level2;  // the points of level n - 2
-  for (int r = 1; r <= n; ++r) {
-    if (r == n - 1)
-      for (int i = 0; i < 3; ++i) level2[i] = b[i];
-    for (int i = 0; i + r <= n; ++i) b[i] = (1 - s) * b[i] + s * b[i + 1];
-  }
-  // Level n - 1 from level n - 2.
-  const Vec4 b0 = (1 - s) * level2[0] + s * level2[1], b1 = (1 - s) * level2[1] + s * level2[2];
-  return {b[0], n * (b1 - b0), n * (n - 1.0) * (level2[2] - 2.0 * level2[1] + level2[0])};
-}
-
-constexpr int kSamples = 96;        // per section in the report
-constexpr int kSearchSamples = 48;  // per section in the fairness search
-
-/// Curvature of the rational section at samples + 1 points (samples <= kSamples): sign changes
-/// of dkappa/ds, the scale-free variation L^3 int kappa_s^2 ds, and (selfApproach) whether the
-/// section comes back near itself.
-Sampled sampleSection(const Net& c, int samples, bool selfApproach) {
-  std::array<double, kSamples + 1> kappa, arc;
-  std::array<Vec3, kSamples + 1> points;
-  double length = 0.0;
-  Vec3 previous;
-  for (int i = 0; i <= samples; ++i) {
-    const double s = static_cast<double>(i) / samples;
-    const auto h = bezierJet(c, s);
-    const double W = h[0][3], W1 = h[1][3], W2 = h[2][3];
-    const Vec3 C = h[0].head<3>() / W;
-    const Vec3 C1 = (h[1].head<3>() - W1 * C) / W;
-    const Vec3 C2 = (h[2].head<3>() - 2.0 * W1 * C1 - W2 * C) / W;
-    const double speed = C1.norm();
-    kappa[i] = speed > 0 ? C1.cross(C2).norm() / (speed * speed * speed) : std::numeric_limits<double>::infinity();
-    if (i > 0) length += (C - previous).norm();
-    arc[i] = length;
-    points[i] = C;
-    previous = C;
-  }
-  Sampled out;
-  out.kappaMin = *std::min_element(kappa.begin(), kappa.begin() + samples + 1);
-  out.kappaMax = *std::max_element(kappa.begin(), kappa.begin() + samples + 1);
-  if (!std::isfinite(out.kappaMax) || !(length > 0)) {
-    out.folded = true;
-    return out;
-  }
-  const double flat = 1e-9 * std::max(out.kappaMax, 1.0 / length);
-  int sign = 0;
-  for (int i = 1; i <= samples; ++i) {
-    const double dk = kappa[i] - kappa[i - 1], ds = arc[i] - arc[i - 1];
-    if (ds > 0) out.variation += dk * dk / ds;
-    if (std::abs(dk) <= flat) continue;
-    const int now = dk > 0 ? 1 : -1;
-    if (sign != 0 && now != sign) ++out.extrema;
-    sign = now;
-  }
-  out.variation *= length * length * length;
-  // Self-approach: two samples far apart along the section but close in space.
-  if (!selfApproach) return out;
-  const double step = length / samples;
-  for (int i = 0; i <= samples && !out.folded; ++i)
-    for (int j = i + 4; j <= samples; ++j) {
-      if ((points[i] - points[j]).norm() < 0.25 * step) {
-        out.folded = true;
-        break;
-      }
-    }
-  return out;
-}
-
-// ---------------------------------------------------------------------------------------
 // Evaluation of the boundary rows at a section
 
 std::vector<double> flatKnots(const Handle(Geom_BSplineSurface)& s) {
@@ -415,89 +295,6 @@ Vec4 atU(const Rows& rows, const TColStd_Array1OfReal& flat, int p, double u) {
 
 Vec3 euclid(const Vec4& h) { return h.head<3>() / h[3]; }
 Vec3 euclidDerivative(const Vec4& h, const Vec4& d) { return (d.head<3>() - d[3] * euclid(h)) / h[3]; }
-
-// ---------------------------------------------------------------------------------------
-// The fairness search (docs/FACE_BLENDS.md section 3)
-
-struct Search {
-  const std::vector<SectionData>& sections;
-  const Boundary& A;
-  const Boundary& B;
-  double alpha0A, alpha0B;
-  int n;
-  int evaluations = 0;
-
-  /// Every weight of the blend's rows stays above 1e-3 of the boundary's smallest (the rows'
-  /// weights are those of eq. (2.3), column 3).
-  bool positiveWeights(const Boundary& side, const Magnitudes& m) const {
-    const double floor = 1e-3 * side.r0.col(3).minCoeff();
-    const auto rows = sideRows<Eigen::VectorXd>(side.r0.col(3), side.d1.col(3), side.d2.col(3), m, n);
-    return rows[1].minCoeff() > floor && (n == 3 || rows[2].minCoeff() > floor);
-  }
-
-  Magnitudes magnitudes(double scale, double bend, double alpha0) const {
-    return Magnitudes{scale * alpha0, bend * scale * alpha0};
-  }
-  /// Fewest extrema first (1000 per extremum), then the least variation; folds are refused.
-  double cost(const std::array<double, 4>& x) {
-    ++evaluations;
-    const Magnitudes ma = magnitudes(x[0], x[1], alpha0A), mb = magnitudes(x[2], x[3], alpha0B);
-    if (!positiveWeights(A, ma) || !positiveWeights(B, mb)) return std::numeric_limits<double>::infinity();
-    double total = 0.0;
-    for (const SectionData& d : sections) {
-      const Sampled s = sampleSection(sectionNet(d, ma, mb, n), kSearchSamples, false);
-      if (s.folded) return std::numeric_limits<double>::infinity();
-      total += 1000.0 * s.extrema + s.variation;
-    }
-    return total;
-  }
-};
-
-std::array<double, 4> searchMagnitudes(Search& search, const FaceBlendOptions& o) {
-  const bool g2 = o.continuity == 2;
-  const bool fixedA = o.scaleA > 0, fixedB = o.scaleB > 0;
-  std::array<double, 4> best{fixedA ? o.scaleA : 1.0, 0.0, fixedB ? o.scaleB : 1.0, 0.0};
-  double bestCost = search.cost(best);
-  // A coarse grid of the two magnitudes, then a pattern search of all four scalars.
-  const double grid[] = {0.3, 0.45, 0.65, 0.9, 1.2, 1.6, 2.2};
-  for (double ga : grid)
-    for (double gb : grid) {
-      std::array<double, 4> x{fixedA ? o.scaleA : ga, 0.0, fixedB ? o.scaleB : gb, 0.0};
-      if ((fixedA && ga != grid[0]) || (fixedB && gb != grid[0])) continue;
-      const double c = search.cost(x);
-      if (c < bestCost) {
-        bestCost = c;
-        best = x;
-      }
-    }
-  std::array<double, 4> step{0.2, 0.5, 0.2, 0.5};
-  std::array<bool, 4> free{!fixedA, g2 && !fixedA, !fixedB, g2 && !fixedB};
-  for (int round = 0; round < 6; ++round) {
-    bool improved = false;
-    for (int k = 0; k < 4; ++k) {
-      if (!free[k]) continue;
-      for (double sign : {1.0, -1.0}) {
-        std::array<double, 4> x = best;
-        x[k] = k % 2 == 0 ? x[k] * (1.0 + sign * step[k]) : x[k] + sign * step[k];
-        if (k % 2 == 1 && std::abs(x[k]) > 4.0) continue;
-        const double c = search.cost(x);
-        if (c < bestCost) {
-          bestCost = c;
-          best = x;
-          improved = true;
-          break;
-        }
-      }
-    }
-    if (!improved)
-      for (double& s : step) s *= 0.5;
-  }
-  if (!std::isfinite(bestCost))
-    throw InputError(
-        "the blend would cross itself: every cross section tried folds back on itself (or a rational face's weights "
-        "would turn negative)");
-  return best;
-}
 
 // ---------------------------------------------------------------------------------------
 // Checks of the result
@@ -661,8 +458,10 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
       c.poles.row(i) = euclid(net.row(i).transpose()).transpose();
       c.weights[i] = net(i, 3);
     }
-    c.knots = Eigen::Vector2d(0.0, 1.0);
-    c.mults = Eigen::Vector2i(n + 1, n + 1);
+    c.knots.resize(2);
+    c.knots << 0.0, 1.0;
+    c.mults.resize(2);
+    c.mults << n + 1, n + 1;
     try {
       const SpaceCurvatureCertificate certificate = certifySpaceCurvature(c);
       section.monotone = certificate.monotone;
