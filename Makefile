@@ -83,6 +83,7 @@ bench: build
 	$(PYTHON) bench/bench_design_recompute.py
 	$(PYTHON) bench/bench_blend.py
 	$(PYTHON) bench/bench_surface_analysis.py
+	$(PYTHON) bench/bench_face_blend.py
 
 # Every benchmark at its smallest size with few repeats (issue 26): only that each still runs
 # to its end, in under 2 minutes; the figures mean nothing. .ci/run runs it.
@@ -99,6 +100,7 @@ bench-smoke: build
 	$(PYTHON) bench/bench_design_recompute.py smoke
 	$(PYTHON) bench/bench_blend.py smoke
 	$(PYTHON) bench/bench_surface_analysis.py smoke
+	$(PYTHON) bench/bench_face_blend.py smoke
 
 # The kernel instrumented for libFuzzer (-fsanitize=address,undefined,fuzzer-no-link) and
 # the harnesses; each runs FUZZ_SECONDS from its seed corpus fuzz/corpus/<harness>/.

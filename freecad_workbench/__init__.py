@@ -62,6 +62,7 @@ from .surface_analysis import (  # noqa: E402
     edge_continuity,
     surface_curvature,
 )
+from .face_blend import FaceBlendReport, blend_errors, blend_faces  # noqa: E402
 from .fair_fit import FairFitReport, fair_edge, fair_edge_report, fair_fit, fair_fit_report  # noqa: E402
 
 __all__ = [
@@ -114,5 +115,8 @@ __all__ = [
     "edge_continuity",
     "CurvatureMap",
     "curvature_map",
+    "FaceBlendReport",
+    "blend_faces",
+    "blend_errors",
 ]
 __version__ = "0.1.0"

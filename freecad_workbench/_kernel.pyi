@@ -195,6 +195,12 @@ def edge_continuity(brep: str, samples_per_span: int = 0, gap_tolerance: float =
 def curvature_map(brep: str, quantity: str = "gaussian", deflection: float = 0.0, fraction: float = 0.05,
                   levels: int = 3) -> tuple[FloatArray, IntArray, FloatArray, IntArray, FloatArray, FloatArray]: ...
 
+# ---- face blends (issue 29)
+
+def blend_faces(brep_a: str, edge_a: int, brep_b: str, edge_b: int, continuity: int = 2, flip: bool = False,
+                start: float = 0.0, end: float = 1.0, sections: int = 13, scale_a: float = 0.0,
+                scale_b: float = 0.0) -> tuple[BSplineSurface, dict]: ...
+
 # ---- basic shapes and their blends (blending paper, Sections 2-5)
 
 class G2CircleSpline:

@@ -95,6 +95,8 @@ fair_fit = _kernel.fair_fit
 surface_curvature = _kernel.surface_curvature
 edge_continuity = _kernel.edge_continuity
 curvature_map = _kernel.curvature_map
+# Face blends (face_blend.py).
+blend_faces = _kernel.blend_faces
 # Basic shapes (shapes.py).
 sphere_zone = _kernel.sphere_zone
 cylinder = _kernel.cylinder

@@ -36,39 +36,6 @@ ShapeFrame frameOf(const Eigen::Vector3d& origin, const Eigen::Vector3d& x, cons
   return f;
 }
 
-/// OCCT surface to the kernel's array layout (exact).
-BSplineSurface fromOcctSurface(const Handle(Geom_BSplineSurface)& s) {
-  BSplineSurface out;
-  out.degreeU = s->UDegree();
-  out.degreeV = s->VDegree();
-  out.nu = s->NbUPoles();
-  out.nv = s->NbVPoles();
-  out.periodicU = s->IsUPeriodic();
-  out.periodicV = s->IsVPeriodic();
-  out.poles.resize(static_cast<Eigen::Index>(out.nu) * out.nv, 3);
-  out.weights.resize(static_cast<Eigen::Index>(out.nu) * out.nv);
-  for (int i = 0; i < out.nu; ++i) {
-    for (int j = 0; j < out.nv; ++j) {
-      const gp_Pnt p = s->Pole(i + 1, j + 1);
-      out.poles.row(i * out.nv + j) << p.X(), p.Y(), p.Z();
-      out.weights[i * out.nv + j] = s->Weight(i + 1, j + 1);
-    }
-  }
-  out.knotsU.resize(s->NbUKnots());
-  out.multsU.resize(s->NbUKnots());
-  for (int k = 0; k < s->NbUKnots(); ++k) {
-    out.knotsU[k] = s->UKnot(k + 1);
-    out.multsU[k] = s->UMultiplicity(k + 1);
-  }
-  out.knotsV.resize(s->NbVKnots());
-  out.multsV.resize(s->NbVKnots());
-  for (int k = 0; k < s->NbVKnots(); ++k) {
-    out.knotsV[k] = s->VKnot(k + 1);
-    out.multsV[k] = s->VMultiplicity(k + 1);
-  }
-  return out;
-}
-
 CircleReparam methodOf(const std::string& name) {
   if (name == "rho") return CircleReparam::Rho;
   if (name == "sigma") return CircleReparam::Sigma;
@@ -124,8 +91,7 @@ void bindBlend(py::module_& m) {
       .def_readonly("closed_v", &G2Surface::closedV)
       .def("set_control", &G2Surface::setControl, "i"_a, "j"_a, "r"_a, "s"_a, "point"_a, "weight"_a)
       .def(
-          "patch", [](const G2Surface& s, int i, int j) { return fromOcctSurface(patchToOcct(s, i, j)); }, "i"_a,
-          "j"_a);
+          "patch", [](const G2Surface& s, int i, int j) { return fromOcct(patchToOcct(s, i, j)); }, "i"_a, "j"_a);
   m.def(
       "sphere_zone",
       [](const Eigen::Vector3d& o, const Eigen::Vector3d& x, const Eigen::Vector3d& y, double radius,
@@ -211,7 +177,7 @@ void bindBlend(py::module_& m) {
           [](const BlendComplex& c) {
             py::list out;
             for (const TaggedPatch& p : c.patches) {
-              out.append(py::make_tuple(roleOf(p.role), p.uPiece, p.vPiece, fromOcctSurface(patchToOcct(p))));
+              out.append(py::make_tuple(roleOf(p.role), p.uPiece, p.vPiece, fromOcct(patchToOcct(p))));
             }
             return out;
           },
@@ -220,7 +186,7 @@ void bindBlend(py::module_& m) {
           "single_surface",
           [](const BlendComplex& c, double tolerance) -> std::optional<BSplineSurface> {
             try {
-              return fromOcctSurface(singleSurface(c, tolerance, c.smoothness));
+              return fromOcct(singleSurface(c, tolerance, c.smoothness));
             } catch (const InputError&) {
               return std::nullopt;  // not a C2 (C1) tensor grid (e.g. the naive baseline)
             }

@@ -12,6 +12,7 @@ void bindMonotone(pybind11::module_& m);  // after the InputError translator: re
 void bindFairBlend(pybind11::module_& m);
 void bindFairFit(pybind11::module_& m);
 void bindSurfaceAnalysis(pybind11::module_& m);
+void bindFaceBlend(pybind11::module_& m);
 
 /// A MonotonicityCertificate as the dict the Python layer reads (bind_monotone.cpp).
 pybind11::dict certificateDict(const MonotonicityCertificate& certificate);

@@ -34,4 +34,5 @@ PYBIND11_MODULE(_kernel, m) {
   fairsplines::python::bindFairBlend(m);
   fairsplines::python::bindFairFit(m);
   fairsplines::python::bindSurfaceAnalysis(m);
+  fairsplines::python::bindFaceBlend(m);
 }

@@ -6,6 +6,7 @@ from .blend_shape import BlendShape, make_blend_shape
 from .csr_fit import CsrFit, make_csr_fit
 from .design_spline import DesignSpline, make_design_spline
 from .edit_polygon import EditPolygon, make_edit_polygon, set_pole
+from .face_blend import FaceBlend, make_face_blend
 from .fair_blend import FairBlend, make_fair_blend
 from .monotone_blend import MonotoneBlend, make_monotone_blend
 from .monotone_design import MonotoneDesign, make_monotone_design
@@ -17,6 +18,7 @@ __all__ = [
     "CsrFit",
     "DesignSpline",
     "EditPolygon",
+    "FaceBlend",
     "FairBlend",
     "MonotoneBlend",
     "MonotoneDesign",
@@ -26,6 +28,7 @@ __all__ = [
     "make_csr_fit",
     "make_design_spline",
     "make_edit_polygon",
+    "make_face_blend",
     "make_fair_blend",
     "make_monotone_blend",
     "make_monotone_design",

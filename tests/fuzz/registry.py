@@ -213,10 +213,23 @@ register("curvature_map", [st.one_of(S.analysis_shape, S.junk)], valid=[S.analys
                      deflection=st.one_of(st.none(), S.number_arg), fraction=S.number_arg, levels=S.count_arg),
          examples=10)
 
+# ---- face blends ----------------------------------------------------------------------------
+_EDGE = st.one_of(S.count_arg, S.choice_arg("start", "end", "Edge1"), S.junk)
+_BLEND_KW = dict(continuity=S.choice_arg("G1", "G2"), flip=S.flag_arg, start=st.one_of(st.none(), S.number_arg),
+                 end=st.one_of(st.none(), S.number_arg), sections=S.count_arg,
+                 scale_a=st.one_of(st.none(), S.number_arg), scale_b=st.one_of(st.none(), S.number_arg),
+                 measure=st.just(False))
+register("blend_faces", [st.one_of(S.analysis_face, S.shape, S.junk), _EDGE, st.one_of(S.analysis_face, S.junk), _EDGE],
+         kwargs=_BLEND_KW, valid=[S.blend_side.map(lambda s: s[0]), S.blend_side.map(lambda s: s[1]),
+                                  S.blend_side.map(lambda s: s[0]), S.blend_side.map(lambda s: s[1])],
+         examples=20)
+register("blend_errors", [st.one_of(S.analysis_face, S.junk), st.one_of(S.analysis_face, S.junk), S.junk, S.junk],
+         examples=5)
+
 # Public names that are not functions to fuzz: exceptions and the result types the API
 # returns (their fields are checked by the contract wherever they come back).
 NOT_CALLABLES = {"InputError", "NoMonotoneSolution", "DesignResult", "ApproximationError", "CurvatureProfile",
-                 "BlendResult", "FairBlendReport", "FairFitReport",
+                 "BlendResult", "FairBlendReport", "FairFitReport", "FaceBlendReport",
                  "SurfaceCurvature", "EdgeContinuity", "CurvatureMap", "basic.BasicCurve", "basic", "shapes"}
 
 

@@ -303,3 +303,23 @@ def analysis_shapes():
 
 analysis_shape = st.integers(0, 7).map(lambda i: analysis_shapes()[i])
 analysis_face = analysis_shape.map(lambda s: s.Faces[0])
+
+
+@functools.lru_cache(maxsize=None)
+def blend_sides():
+    """(face, edge) pairs for face blends: cylinder rims, a box's faces (sharing edges: faces that
+    touch), a sphere (degenerate poles, seam), a cone and a plane at a distance."""
+    import FreeCAD
+    import Part
+
+    cylinder = Part.makeCylinder(1, 1).Faces[0]
+    far = Part.makeCylinder(1.4, 1, FreeCAD.Vector(0.2, 0, 2)).Faces[0]
+    box = Part.makeBox(1, 1, 1)
+    sphere = Part.makeSphere(1, FreeCAD.Vector(0, 0, -3)).Faces[0]
+    cone = Part.makeCone(1, 0.5, 1, FreeCAD.Vector(0, 0, 4)).Faces[0]
+    plane = Part.makePlane(2, 2, FreeCAD.Vector(-1, -1, 6))
+    faces = [cylinder, far, box.Faces[0], box.Faces[2], sphere, cone, plane]
+    return [(f, i + 1) for f in faces for i in range(len(f.Edges))]
+
+
+blend_side = st.integers(0, 10 ** 6).map(lambda i: blend_sides()[i % len(blend_sides())])

@@ -132,6 +132,38 @@ Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface) {
   }
 }
 
+BSplineSurface fromOcct(const Handle(Geom_BSplineSurface)& s) {
+  BSplineSurface out;
+  out.degreeU = s->UDegree();
+  out.degreeV = s->VDegree();
+  out.nu = s->NbUPoles();
+  out.nv = s->NbVPoles();
+  out.periodicU = s->IsUPeriodic();
+  out.periodicV = s->IsVPeriodic();
+  out.poles.resize(static_cast<Eigen::Index>(out.nu) * out.nv, 3);
+  out.weights.resize(static_cast<Eigen::Index>(out.nu) * out.nv);
+  for (int i = 0; i < out.nu; ++i) {
+    for (int j = 0; j < out.nv; ++j) {
+      const gp_Pnt p = s->Pole(i + 1, j + 1);
+      out.poles.row(i * out.nv + j) << p.X(), p.Y(), p.Z();
+      out.weights[i * out.nv + j] = s->Weight(i + 1, j + 1);
+    }
+  }
+  out.knotsU.resize(s->NbUKnots());
+  out.multsU.resize(s->NbUKnots());
+  for (int k = 0; k < s->NbUKnots(); ++k) {
+    out.knotsU[k] = s->UKnot(k + 1);
+    out.multsU[k] = s->UMultiplicity(k + 1);
+  }
+  out.knotsV.resize(s->NbVKnots());
+  out.multsV.resize(s->NbVKnots());
+  for (int k = 0; k < s->NbVKnots(); ++k) {
+    out.knotsV[k] = s->VKnot(k + 1);
+    out.multsV[k] = s->VMultiplicity(k + 1);
+  }
+  return out;
+}
+
 TopoDS_Face validFace(const Handle(Geom_BSplineSurface)& surface, const std::string& what) {
   TopoDS_Face face;
   try {

@@ -41,6 +41,9 @@ BSplineSurface revolve(const BSplineCurve& profile, const Eigen::Vector3d& axisP
 /// Exact conversion; throws InputError when OCCT rejects the data.
 Handle(Geom_BSplineSurface) toOcct(const BSplineSurface& surface);
 
+/// Exact conversion back (weights always filled); throws nothing, the handle must not be null.
+BSplineSurface fromOcct(const Handle(Geom_BSplineSurface)& surface);
+
 /// The face bounded by the surface's own boundary (BRepBuilderAPI_MakeFace), as it leaves the
 /// kernel: throws InputError naming `what` when OCCT's check (BRepCheck_Analyzer) calls it not
 /// valid, e.g. a surface 1e12 from the origin and 1 across, or of denormal size.

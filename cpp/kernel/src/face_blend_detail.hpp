@@ -1,0 +1,97 @@
+// Internal: what face_blend.cpp (the sides and the surface) and face_blend_fairness.cpp (the
+// cross sections and the search of their magnitudes) share (issue 29; docs/FACE_BLENDS.md).
+#pragma once
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "fairsplines/face_blend.hpp"
+
+namespace fairsplines::face_blend_detail {
+
+using Vec3 = Eigen::Vector3d;
+using Vec4 = Eigen::Vector4d;
+using Rows = Eigen::Matrix<double, Eigen::Dynamic, 4>;  // homogeneous poles (w x, w y, w z, w)
+using Net = Eigen::Matrix<double, Eigen::Dynamic, 4>;   // a section's homogeneous Bezier points
+
+/// Homogeneous boundary rows of one side: position, first and second cross-boundary derivative.
+struct Boundary {
+  Rows r0, d1, d2;  // nu x 4 each, in the common u-basis
+};
+
+// ---------------------------------------------------------------------------------------
+// The blend's rows across: docs/FACE_BLENDS.md eq. (2.3)
+
+struct Magnitudes {
+  double alpha = 1.0, beta = 0.0;
+};
+
+/// Rows 0, 1 (, 2) of a Bezier of degree n in s matching the side to first (second) order under
+/// v(s) = v0 - alpha s + beta s^2 / 2:  B_s = -alpha P_v,  B_ss = alpha^2 P_vv + beta P_v.
+template <class R>
+std::array<R, 3> sideRows(const R& r0, const R& d1, const R& d2, const Magnitudes& m, int n) {
+  const R r1 = r0 - (m.alpha / n) * d1;
+  const R r2 = 2.0 * r1 - r0 + (m.alpha * m.alpha * d2 + m.beta * d1) / (n * (n - 1.0));
+  return {r0, r1, r2};
+}
+
+// ---------------------------------------------------------------------------------------
+// Cross sections: rational Bezier curves in s (face_blend_fairness.cpp)
+
+struct SectionData {
+  double u = 0.0;
+  Vec4 a0, a1, a2, b0, b1, b2;  // the boundary rows of both sides at u
+};
+
+struct Sampled {
+  int extrema = 0;
+  double variation = 0.0, kappaMin = 0.0, kappaMax = 0.0;
+  bool folded = false;
+};
+
+constexpr int kSamples = 96;        // per section in the report
+constexpr int kSearchSamples = 48;  // per section in the fairness search
+
+/// The Bezier points of the section at d.u with the sides' magnitudes (degree n: 5 or 3).
+Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int n);
+
+/// Value and first two derivatives of a Bezier of degree n <= 5 at s.
+std::array<Vec4, 3> bezierJet(const Net& c, double s);
+
+/// Curvature of the rational section at samples + 1 points (samples <= kSamples): sign changes
+/// of dkappa/ds, the scale-free variation L^3 int kappa_s^2 ds, and (selfApproach) whether the
+/// section comes back near itself.
+Sampled sampleSection(const Net& c, int samples, bool selfApproach);
+
+// ---------------------------------------------------------------------------------------
+// The fairness search (docs/FACE_BLENDS.md section 3)
+
+struct Search {
+  const std::vector<SectionData>& sections;
+  const Boundary& A;
+  const Boundary& B;
+  double alpha0A, alpha0B;
+  int n;
+  int evaluations = 0;
+
+  /// Every weight of the blend's rows stays above 1e-3 of the boundary's smallest (the rows'
+  /// weights are those of eq. (2.3), column 3).
+  bool positiveWeights(const Boundary& side, const Magnitudes& m) const {
+    const double floor = 1e-3 * side.r0.col(3).minCoeff();
+    const auto rows = sideRows<Eigen::VectorXd>(side.r0.col(3), side.d1.col(3), side.d2.col(3), m, n);
+    return rows[1].minCoeff() > floor && (n == 3 || rows[2].minCoeff() > floor);
+  }
+
+  Magnitudes magnitudes(double scale, double bend, double alpha0) const {
+    return Magnitudes{scale * alpha0, bend * scale * alpha0};
+  }
+  /// Fewest extrema first (1000 per extremum), then the least variation; folds and weights that
+  /// would turn negative are refused (infinite cost).
+  double cost(const std::array<double, 4>& x);
+};
+
+/// The scalars (scale_a, bend_a, scale_b, bend_b) of the fairest sections: a grid of the scales,
+/// then a pattern search. Throws InputError when every candidate folds.
+std::array<double, 4> searchMagnitudes(Search& search, const FaceBlendOptions& o);
+
+}  // namespace fairsplines::face_blend_detail

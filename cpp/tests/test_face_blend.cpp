@@ -1,0 +1,121 @@
+// Face blends (issue 29): the blend between two cylinders' rims judged by OCCT at 101 points of
+// each rim (GeomAPI_ProjectPointOnSurf, GeomLProp_SLProps: position, normal, Gaussian and mean
+// curvature), never by the construction's formulas; bad input names the problem.
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomAPI_ProjectPointOnSurf.hxx>
+#include <GeomLProp_SLProps.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <array>
+#include <cmath>
+
+#include "fairsplines/errors.hpp"
+#include "fairsplines/face_blend.hpp"
+
+using namespace fairsplines;
+
+namespace {
+
+struct Rim {
+  TopoDS_Face face;
+  int edge = 0;
+};
+
+/// The lateral face of a cylinder and the number of its rim at height z.
+Rim cylinderRim(double radius, double z0, double height, double x, double z) {
+  const TopoDS_Shape solid = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, 0, z0), gp_Dir(0, 0, 1)), radius, height);
+  Rim rim;
+  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face f = TopoDS::Face(e.Current());
+    if (!Handle(Geom_CylindricalSurface)::DownCast(BRep_Tool::Surface(f)).IsNull()) rim.face = f;
+  }
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(rim.face, TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    BRepAdaptor_Curve c(TopoDS::Edge(edges(i)));
+    if (c.GetType() == GeomAbs_Circle && std::abs(c.Circle().Location().Z() - z) < 1e-12) rim.edge = i;
+  }
+  return rim;
+}
+
+/// The largest differences between the blend's boundary s and the face: distance, angle of the
+/// normals (radians), |Gaussian| and |mean| curvature jumps.
+std::array<double, 4> compare(const Handle(Geom_BSplineSurface)& blend, double s, const TopoDS_Face& face) {
+  const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  std::array<double, 4> worst{0, 0, 0, 0};
+  for (int i = 0; i <= 100; ++i) {
+    const gp_Pnt p = blend->Value(i / 100.0, s);
+    GeomAPI_ProjectPointOnSurf projection(p, surface);
+    double u, v;
+    projection.LowerDistanceParameters(u, v);
+    worst[0] = std::max(worst[0], projection.LowerDistance());
+    GeomLProp_SLProps a(blend, i / 100.0, s, 2, 1e-12), b(surface, u, v, 2, 1e-12);
+    worst[1] = std::max(worst[1], a.Normal().Angle(b.Normal()) > 1.0 ? M_PI - a.Normal().Angle(b.Normal())
+                                                                     : a.Normal().Angle(b.Normal()));
+    worst[2] = std::max(worst[2], std::abs(a.GaussianCurvature() - b.GaussianCurvature()));
+    worst[3] = std::max(worst[3], std::abs(std::abs(a.MeanCurvature()) - std::abs(b.MeanCurvature())));
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST(FaceBlend, CoaxialCylinders_G2AlongTheWholeRim) {
+  const Rim a = cylinderRim(1.0, 0.0, 1.0, 0.0, 1.0), b = cylinderRim(1.5, 2.0, 1.0, 0.0, 2.0);
+  ASSERT_GT(a.edge, 0);
+  ASSERT_GT(b.edge, 0);
+  const FaceBlend blend = blendFaces(a.face, a.edge, b.face, b.edge);
+  for (const auto& [s, face] : {std::pair{0.0, a.face}, std::pair{1.0, b.face}}) {
+    const auto e = compare(blend.surface, s, face);
+    EXPECT_LT(e[0], 1e-12);
+    EXPECT_LT(e[1], 1e-10);
+    EXPECT_LT(e[2], 1e-9);
+    EXPECT_LT(e[3], 1e-9);
+  }
+  EXPECT_EQ(blend.sides[0].method, "exact");
+  EXPECT_TRUE(blend.sides[0].closed && blend.sides[1].closed);
+  // Every section the same S between two straight generators: 0, a maximum, 0 (the inflection), a
+  // maximum, 0 -- the fewest extrema such ends admit.
+  for (const FaceBlendSection& section : blend.sections) EXPECT_EQ(section.curvatureExtrema, 3);
+}
+
+TEST(FaceBlend, G1MatchesTheNormalOnly) {
+  const Rim a = cylinderRim(1.0, 0.0, 1.0, 0.0, 1.0), b = cylinderRim(1.0, 2.0, 1.0, 0.3, 2.0);
+  FaceBlendOptions o;
+  o.continuity = 1;
+  const FaceBlend blend = blendFaces(a.face, a.edge, b.face, b.edge, o);
+  const auto e = compare(blend.surface, 0.0, a.face);
+  EXPECT_LT(e[0], 1e-12);
+  EXPECT_LT(e[1], 1e-10);
+  EXPECT_EQ(blend.surface->VDegree(), 3);
+}
+
+TEST(FaceBlend, BadInput_NamesTheProblem) {
+  const Rim a = cylinderRim(1.0, 0.0, 1.0, 0.0, 1.0), b = cylinderRim(1.5, 2.0, 1.0, 0.0, 2.0);
+  auto message = [&](int edgeA, const TopoDS_Face& faceB, int edgeB) {
+    try {
+      blendFaces(a.face, edgeA, faceB, edgeB);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(9, b.face, b.edge).find("edge_a is edge 9"), std::string::npos);
+  // A cylinder's seam is an isoparametric line inside its face, not a boundary.
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(a.face, TopAbs_EDGE, edges);
+  int seam = 0;
+  for (int i = 1; i <= edges.Extent(); ++i)
+    if (BRepAdaptor_Curve(TopoDS::Edge(edges(i))).GetType() == GeomAbs_Line) seam = i;
+  EXPECT_NE(message(seam, b.face, b.edge).find("fitted blends are not implemented"), std::string::npos);
+  // The same rim on both sides: the faces touch.
+  const Rim touching = cylinderRim(1.0, 1.0, 1.0, 0.0, 1.0);
+  EXPECT_NE(message(a.edge, touching.face, touching.edge).find("faces touch"), std::string::npos);
+}

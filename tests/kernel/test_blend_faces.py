@@ -1,0 +1,338 @@
+"""G2 face blends (issue 29): every case judged by OCCT on the returned Part surface against the
+faces (fw.blend_errors: 101 points per edge, Surface.parameter / value / normal / getDN, normal
+curvature across the edge and at 45 degrees), never by the construction's formulas; one case
+also by the surface-analysis continuity check (fw.edge_continuity) on a sewn shell. Cross
+sections are Part curves (uIso) whose curvature extrema are counted by sampling OCCT's
+curvature."""
+import math
+
+import numpy as np
+import pytest
+
+import FreeCAD
+import Part
+
+import freecad_workbench as fw
+
+from .test_fair_blend_space import import_partdesign
+
+V = FreeCAD.Vector
+GAP, ANGLE, CURVATURE = 1e-7, 1e-4, 1e-4  # the issue's tolerances
+
+
+def _edge_at(face, predicate):
+    edges = [i for i, e in enumerate(face.Edges) if e.Length > 1e-12 and predicate(e)]
+    assert len(edges) == 1, [e.CenterOfMass for e in face.Edges]
+    return face.Edges[edges[0]]
+
+
+def _rim(face, z):
+    return _edge_at(face, lambda e: e.Curve.__class__.__name__ == "Circle" and abs(e.CenterOfMass.z - z) < 1e-9)
+
+
+def _check(blend, report, g2=True):
+    """The issue's tolerances on both sides, from the report's OCCT referee and recomputed here."""
+    assert report.valid
+    for side in report.errors:
+        assert side["samples"] == 101
+        assert side["gap"] <= GAP, side
+        assert side["angle"] <= ANGLE, side
+        if g2:
+            assert side["curvature_jump_across"] <= CURVATURE, side
+            assert side["curvature_jump_45"] <= CURVATURE, side
+    assert blend.toShape().isValid()
+
+
+def _section_extrema(blend, u, n=400):
+    """Curvature extrema of the cross section at u (a Part curve), by sampling OCCT's curvature."""
+    section = blend.uIso(u)
+    k = np.array([section.curvature(section.FirstParameter + (section.LastParameter - section.FirstParameter) * i / n)
+                  for i in range(n + 1)])
+    d = np.diff(k)
+    d = d[np.abs(d) > 1e-9 * max(k.max(), 1e-300)]
+    return int(np.sum(np.sign(d[1:]) != np.sign(d[:-1])))
+
+
+def _cylinder(radius, z0, height, x=0.0):
+    return Part.makeCylinder(radius, height, V(x, 0, z0), V(0, 0, 1)).Faces[0]
+
+
+def _bspline_face(poles, degree_u, degree_v, knots_u=None, knots_v=None, weights=None):
+    nu, nv = len(poles), len(poles[0])
+
+    def clamped(n, p, interior):
+        knots = [0.0] + list(interior) + [1.0]
+        mults = [p + 1] + [1] * len(interior) + [p + 1]
+        assert sum(mults) == n + p + 1
+        return knots, mults
+
+    ku, mu = clamped(nu, degree_u, knots_u or [])
+    kv, mv = clamped(nv, degree_v, knots_v or [])
+    s = Part.BSplineSurface()
+    args = [[[V(*p) for p in row] for row in poles], mu, mv, ku, kv, False, False, degree_u, degree_v]
+    if weights is not None:
+        args.append(weights)
+    s.buildFromPolesMultsKnots(*args)
+    return s.toShape()
+
+
+def _wavy(nu, nv, z0, amplitude, x0=0.0, y0=0.0, lx=2.0, ly=1.0):
+    return [[(x0 + lx * i / (nu - 1), y0 + ly * j / (nv - 1),
+              z0 + amplitude * math.sin(1.3 * i + 0.7 * j) * (j / (nv - 1)) ** 2) for j in range(nv)]
+            for i in range(nu)]
+
+
+# ---- the issue's cases ---------------------------------------------------------------------------------
+
+
+def test_coaxial_cylinders_closed_rim_is_g2_exact_and_fair():
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.5, 2.0, 1.0)
+    blend, report = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0))
+    _check(blend, report)
+    assert all(side["method"] == "exact" and side["closed"] for side in report.sides)
+    # The blend closes around the axis, G2 across its own seam (the surface analysis's verdict).
+    assert blend.value(0.0, 0.5).distanceToPoint(blend.value(1.0, 0.5)) < 1e-12
+    seam = [r for r in fw.edge_continuity(blend.toShape()) if r.kind == "seam"]
+    assert len(seam) == 1 and seam[0].continuity == "G2" and seam[0].curvature_jump < 1e-9, seam
+    # Rotationally symmetric data: every section the same S between two straight generators, whose
+    # unsigned curvature has the least possible extrema: 0, a maximum, 0 (the inflection), a maximum, 0.
+    counts = {_section_extrema(blend, u) for u in (0.05, 0.31, 0.5, 0.77)}
+    assert counts == {3}, counts
+    assert all(s["curvature_extrema"] == 3 for s in report.sections)
+
+
+def test_offset_cylinders():
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.0, 2.0, 1.0, x=0.4)
+    blend, report = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0))
+    _check(blend, report)
+    assert max(_section_extrema(blend, u) for u in np.linspace(0, 1, 9)) <= 3
+
+
+def _section_fairness(blend, u, n=200):
+    """(curvature extrema, L^3 int (dkappa/ds)^2 ds) of the section at u, from OCCT's curvature and arc length."""
+    section = blend.uIso(u)
+    t = np.linspace(section.FirstParameter, section.LastParameter, n + 1)
+    k = np.array([section.curvature(x) for x in t])
+    ds = np.array([section.length(t[i], t[i + 1]) for i in range(n)])
+    dk = np.diff(k)
+    length = ds.sum()
+    return _section_extrema(blend, u), float(length ** 3 * np.sum(dk * dk / ds))
+
+
+def test_fair_magnitudes_beat_fixed_ones():
+    """The chosen magnitudes give sections with no more curvature extrema, and then no more
+    variation, than fixed magnitudes (a third of the chord and others), as OCCT measures them."""
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.0, 2.0, 1.0, x=0.4)
+    fair, report = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0), measure=False)
+    us = np.linspace(0.0, 1.0, 9)
+
+    def score(blend):
+        values = [_section_fairness(blend, float(u)) for u in us]
+        return sum(e for e, _ in values), sum(v for _, v in values)
+
+    best = score(fair)
+    compared = 0
+    for scale in (0.4, 0.7, 1.0, 1.5, 2.2):
+        try:
+            fixed, _ = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0), scale_a=scale, scale_b=scale, measure=False)
+        except fw.InputError as exc:  # too long a magnitude folds the blend: refused
+            assert "cross itself" in str(exc)
+            continue
+        other = score(fixed)
+        compared += 1
+        assert best[0] < other[0] or (best[0] == other[0] and best[1] <= other[1] * 1.001), (scale, best, other)
+    assert compared >= 3
+
+
+def test_plane_to_curved_bspline_face():
+    plane = Part.makePlane(2.0, 1.0, V(0, -1.0, 0))  # y in [-1, 0], edge y = 0
+    edge_a = _edge_at(plane, lambda e: abs(e.CenterOfMass.y) < 1e-12 and e.Length > 1.9)
+    surface = _bspline_face(_wavy(6, 5, 0.8, 0.15, y0=0.6), 3, 3, [0.3, 0.7], [0.5])
+    edge_b = _edge_at(surface, lambda e: abs(e.CenterOfMass.y - 0.6) < 1e-9)
+    blend, report = fw.blend_faces(plane, edge_a, surface, edge_b)
+    _check(blend, report)
+    assert report.sides[0]["surface_type"] == "Plane"
+
+
+def test_report_sections_agree_with_occt():
+    """A plane into a quarter cylinder turning the same way: every section's certified extremum
+    count is what OCCT's curvature along the section (uIso) shows, and it is the fewest such
+    ends admit here (one: a clothoid from 0 to 1/r turning 90 degrees is longer than the gap)."""
+    plane = Part.makePlane(2.0, 1.0, V(0, -1.0, 0))
+    edge_a = _edge_at(plane, lambda e: abs(e.CenterOfMass.y) < 1e-12 and e.Length > 1.9)
+    arc = Part.makeCircle(1.0, V(0, 0.2, 0.8), V(1, 0, 0), 0, 90)
+    quarter = arc.extrude(V(2, 0, 0)).Faces[0]
+    edge_b = _edge_at(quarter, lambda e: e.Curve.__class__.__name__ == "Line" and abs(e.CenterOfMass.y - 1.2) < 1e-9)
+    blend, report = fw.blend_faces(plane, edge_a, quarter, edge_b)
+    _check(blend, report)
+    for section in report.sections:
+        assert section["curvature_extrema"] == section["sampled_extrema"] == _section_extrema(blend, section["u"])
+    assert {s["curvature_extrema"] for s in report.sections} == {1}
+
+
+def test_sphere_to_cone():
+    sphere = Part.makeSphere(1.0, V(0, 0, 0), V(0, 0, 1), -30, 30).Faces[0]
+    cone = Part.makeCone(1.3, 0.9, 1.0, V(0, 0, 1.4)).Faces[0]
+    blend, report = fw.blend_faces(sphere, _rim(sphere, 0.5), cone, _rim(cone, 1.4))
+    _check(blend, report)
+    assert [s["surface_type"] for s in report.sides] == ["SphericalSurface", "ConicalSurface"]
+
+
+def test_bspline_faces_of_different_degrees_and_knots():
+    a = _bspline_face(_wavy(7, 4, 0.0, 0.1), 3, 3, [0.2, 0.5, 0.8], [])
+    b = _bspline_face(_wavy(5, 6, 0.0, 0.1, y0=1.8, lx=2.5), 2, 4, [0.4, 0.6], [0.5])
+    edge_a = _edge_at(a, lambda e: abs(e.CenterOfMass.y - 1.0) < 1e-9)
+    edge_b = _edge_at(b, lambda e: abs(e.CenterOfMass.y - 1.8) < 1e-9)
+    blend, report = fw.blend_faces(a, edge_a, b, edge_b)
+    _check(blend, report)
+    # Cross-checked by the surface analysis (issue 27): the sewn shell is G2 along both edges.
+    shell = Part.makeShell([a, blend.toShape(), b])
+    shell.sewShape()
+    verdicts = [r for r in fw.edge_continuity(shell) if r.kind == "shared"]
+    assert len(verdicts) == 2
+    assert all(r.continuity == "G2" and r.curvature_jump < 1e-6 for r in verdicts), verdicts
+
+
+def test_rational_face():
+    poles = _wavy(4, 4, 0.0, 0.2)
+    weights = [[1.0, 1.4, 0.7, 1.0], [1.0, 0.6, 1.5, 1.0], [1.0, 1.2, 0.9, 1.0], [1.0, 0.8, 1.3, 1.0]]
+    a = _bspline_face(poles, 3, 3, weights=weights)
+    assert a.Surface.isURational() or a.Surface.isVRational()
+    # Half a cylinder along x above the gap: its straight boundary nearest face a.
+    b = Part.makeCylinder(0.6, 2.0, V(0, 2.4, 0.9), V(1, 0, 0), 180).Faces[0]
+    edge_a = _edge_at(a, lambda e: abs(e.CenterOfMass.y - 1.0) < 1e-9)
+    lines = [e for e in b.Edges if e.Curve.__class__.__name__ == "Line"]
+    edge_b = min(lines, key=lambda e: e.distToShape(edge_a)[0])
+    blend, report = fw.blend_faces(a, edge_a, b, edge_b)
+    _check(blend, report)
+    assert report.sides[0]["rational"] and report.sides[1]["rational"]
+    weights = np.array(blend.getWeights())
+    assert np.ptp(weights) > 0.1  # the blend carries the faces' weights
+
+
+def test_basic_shapes_are_sides():
+    zone = fw.shapes.SphereZone((0, 0, 0), 1.0, np.linspace(0, 2 * np.pi, 5), [-0.5, 0.0, 0.5])
+    torus = fw.shapes.Torus((0, 0, 2.2), 1.6, 0.4, np.linspace(0, 2 * np.pi, 5), [-np.pi / 2, 0.0, np.pi / 2])
+    blend, report = fw.blend_faces(zone, "end", torus, "start")
+    _check(blend, report)
+    assert report.sides[1]["surface_type"] == "ToroidalSurface"
+    cylinder = fw.shapes.Cylinder((0, 0, 0), 1.0, np.linspace(0, np.pi, 3), [0.0, 1.0])
+    cone = fw.shapes.Cone((0, 0, 1.8), 0.9, 0.4, np.linspace(0, np.pi, 3), [0.0, 1.0])
+    blend, report = fw.blend_faces(cylinder, "end", cone, "start")
+    _check(blend, report)
+
+
+def test_partial_edges_and_flip():
+    a = _bspline_face(_wavy(6, 4, 0.0, 0.1), 3, 3, [0.3, 0.6], [])
+    b = _bspline_face(_wavy(6, 4, 0.3, 0.1, y0=1.9)[::-1], 3, 3, [0.3, 0.6], [])  # its edge runs the other way
+    edge_a = _edge_at(a, lambda e: abs(e.CenterOfMass.y - 1.0) < 1e-9)
+    edge_b = _edge_at(b, lambda e: abs(e.CenterOfMass.y - 1.9) < 1e-9)
+    blend, report = fw.blend_faces(a, edge_a, b, edge_b, flip=True, start=0.2, end=0.7)
+    assert report.valid
+    for side, face, edge in ((0, a, edge_a), (1, b, edge_b)):
+        errors = fw.blend_errors(blend, face, edge, float(side), 0.2, 0.7, report.size)
+        assert errors["gap"] <= GAP and errors["angle"] <= ANGLE and errors["curvature_jump"] <= CURVATURE, errors
+    # u = 0 starts at 0.2 of edge a and (flipped) at 0.7 of edge b; u = 1 at 0.7 of a and 0.2 of b.
+
+    def at(edge, f):
+        return edge.valueAt(edge.FirstParameter + f * (edge.LastParameter - edge.FirstParameter))
+
+    for u, fa, fb in ((0.0, 0.2, 0.7), (1.0, 0.7, 0.2)):
+        assert blend.value(u, 0.0).distanceToPoint(at(edge_a, fa)) < 1e-12
+        assert blend.value(u, 1.0).distanceToPoint(at(edge_b, fb)) < 1e-12
+
+
+def test_partdesign_solid_faces(doc):
+    import_partdesign()
+    body = doc.addObject("PartDesign::Body", "Body")
+    cylinder = body.newObject("PartDesign::AdditiveCylinder", "Cylinder")
+    cylinder.Radius, cylinder.Height = 1.0, 1.0
+    other = doc.addObject("PartDesign::Body", "Body001")
+    cone = other.newObject("PartDesign::AdditiveCone", "Cone")
+    cone.Radius1, cone.Radius2, cone.Height = 1.4, 0.8, 1.0
+    other.Placement = FreeCAD.Placement(V(0.2, 0, 2.0), FreeCAD.Rotation())
+    doc.recompute()
+    face_a = [f for f in body.Shape.Faces if f.Surface.__class__.__name__ == "Cylinder"][0]
+    face_b = [f for f in other.Shape.Faces if f.Surface.__class__.__name__ == "Cone"][0]
+    blend, report = fw.blend_faces(face_a, _rim(face_a, 1.0), face_b, _rim(face_b, 2.0))
+    _check(blend, report)
+
+
+def test_g1_against_occt_fillet():
+    """The walls a fillet leaves: OCCT's fillet is G1 there (curvature jumps by 1/r); our G1 blend
+    meets them as closely in normal, our G2 blend in curvature too."""
+    box = Part.makeBox(2, 2, 2)
+    edge = _edge_at(box, lambda e: abs(e.CenterOfMass.x - 1) < 1e-9 and abs(e.CenterOfMass.y) < 1e-9
+                    and abs(e.CenterOfMass.z - 2) < 1e-9)
+    filleted = box.makeFillet(0.5, [edge])
+    fillet = [f for f in filleted.Faces if f.Surface.__class__.__name__ == "Cylinder"][0]
+    walls = []
+    for e in (e for e in fillet.Edges if e.Curve.__class__.__name__ == "Line"):
+        for f in filleted.Faces:
+            if not f.isSame(fillet) and any(fe.isSame(e) for fe in f.Edges) and f.Surface.__class__.__name__ == "Plane":
+                walls.append((f, [fe for fe in f.Edges if fe.isSame(e)][0]))
+    assert len(walls) == 2
+    (fa, ea), (fb, eb) = walls
+    size = fillet.BoundBox.DiagonalLength
+    occt = [fw.blend_errors(fillet.Surface, f, e, None, size=size) for f, e in walls]
+    g1, report1 = fw.blend_faces(fa, ea, fb, eb, continuity="G1")
+    g2, report2 = fw.blend_faces(fa, ea, fb, eb, continuity="G2")
+    _check(g1, report1, g2=False)
+    _check(g2, report2)
+    for ours, theirs in zip(report1.errors, occt):
+        assert ours["angle"] <= max(theirs["angle"], ANGLE)
+    # The fillet's curvature jumps by 1/r across its edges; the G2 blend's by rounding.
+    assert min(t["curvature_jump_across"] for t in occt) > 0.5
+    assert max(e["curvature_jump"] for e in report2.errors) < 1e-6
+
+
+def test_trimmed_edge_is_refused_with_its_reason():
+    plane = Part.makePlane(2, 2)
+    disc = Part.Face(Part.Wire(Part.makeCircle(0.5, V(1, 1, 0))))
+    trimmed = plane.cut(disc).Faces[0]
+    circle = _edge_at(trimmed, lambda e: e.Curve.__class__.__name__ == "Circle")
+    other = _cylinder(1.0, 2.0, 1.0)
+    with pytest.raises(fw.InputError, match="trimmed edge|fitted blends"):
+        fw.blend_faces(trimmed, circle, other, _rim(other, 2.0))
+
+
+# ---- bad input -------------------------------------------------------------------------------------------
+
+
+def test_bad_input_names_the_problem():
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.5, 2.0, 1.0)
+    with pytest.raises(fw.InputError, match="edge_a is not an edge of face_a"):
+        fw.blend_faces(a, _rim(b, 2.0), b, _rim(b, 2.0))
+    box = Part.makeBox(1, 1, 1)
+    f1, f2 = box.Faces[0], [f for f in box.Faces if any(e.isSame(box.Faces[0].Edges[0]) for e in f.Edges)
+                            and not f.isSame(box.Faces[0])][0]
+    shared = box.Faces[0].Edges[0]
+    with pytest.raises(fw.InputError, match="faces touch"):
+        fw.blend_faces(f1, shared, f2, shared)
+    sphere = Part.makeSphere(1.0).Faces[0]
+    pole = [i + 1 for i, e in enumerate(sphere.Edges) if e.Length < 1e-12][0]
+    with pytest.raises(fw.InputError, match="degenerate"):
+        fw.blend_faces(sphere, pole, b, _rim(b, 2.0))
+    seam = [i + 1 for i, e in enumerate(a.Edges) if e.Curve.__class__.__name__ == "Line"][0]
+    with pytest.raises(fw.InputError, match="seam|not its boundary|isoparametric"):
+        fw.blend_faces(a, seam, b, _rim(b, 2.0))
+    with pytest.raises(fw.InputError, match="continuity"):
+        fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0), continuity="G3")
+    with pytest.raises(fw.InputError, match="start and end"):
+        fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0), start=0.6, end=0.4)
+    with pytest.raises(fw.InputError, match="edge_b is edge 9"):
+        fw.blend_faces(a, _rim(a, 1.0), b, 9)
+    with pytest.raises(fw.InputError, match="face_a must be"):
+        fw.blend_faces("face", 1, b, 1)
+
+
+def test_crossing_blend_is_refused():
+    """Edges that run opposite ways make the sections cross: refused, never returned."""
+    a = _bspline_face(_wavy(6, 4, 0.0, 0.0), 3, 3, [0.3, 0.6], [])
+    b = _bspline_face(_wavy(6, 4, 0.0, 0.0, y0=1.2)[::-1], 3, 3, [0.3, 0.6], [])
+    edge_a = _edge_at(a, lambda e: abs(e.CenterOfMass.y - 1.0) < 1e-9)
+    edge_b = _edge_at(b, lambda e: abs(e.CenterOfMass.y - 1.2) < 1e-9)
+    with pytest.raises(fw.InputError, match="cross itself"):
+        fw.blend_faces(a, edge_a, b, edge_b)
+    blend, report = fw.blend_faces(a, edge_a, b, edge_b, flip=True)
+    _check(blend, report)
