@@ -64,8 +64,12 @@ class FairSplinesWorkbench(FreeCADGui.Workbench):
     def Activated(self):
         # Put the FairSplines toolbar on a row of its own when FreeCAD's toolbars fill the
         # first: appended there, it collapses to one button and a chevron.
-        from freecad_workbench.gui.commands import place_toolbar
+        from fairsplines_setup import record
 
+        try:
+            from freecad_workbench.gui.commands import place_toolbar
+        except record.KernelUnavailable:  # no kernel yet: only "Build the kernel" is there
+            return
         place_toolbar()
 
     def Deactivated(self):

@@ -67,8 +67,16 @@ def _drive_dialog():
     child(qt.QtWidgets.QPushButton, "close").click()
 
 
+def _watchdog():
+    result["error"] = "timed out (a modal window?)"
+    _write()
+    FreeCADGui.getMainWindow().grab().save(os.path.join(OUT, "timeout.png"))
+    os._exit(3)
+
+
 def main():
     try:
+        _qt().QtCore.QTimer.singleShot(int(os.environ.get("FAIRSPLINES_FIRST_RUN_TIMEOUT", "4000")) * 1000, _watchdog)
         _qt().QtCore.QTimer.singleShot(500, _drive_dialog)
         FreeCADGui.activateWorkbench("FairSplinesWorkbench")
         FreeCADGui.updateGui()
