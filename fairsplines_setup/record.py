@@ -143,7 +143,10 @@ def unavailable_message(python=None):
     python = python or python_version()
     lines = [f"The FairSplines C++ kernel is not built for this FreeCAD (Python {python}, "
              f"OpenCASCADE {occt_version() or '?'})."]
-    lines += ["  " + describe(folder) for folder in candidates()]
+    for folder in candidates():
+        record = read(folder)
+        found = mismatches(record, python) if record is not None else []
+        lines.append("  " + describe(folder) + ("" if not found else ": " + "; ".join(found)))
     lines.append("Activate the FairSplines workbench in FreeCAD to build it (no root needed), or run "
                  "'make build' in the add-on's folder with this FreeCAD's Python.")
     return "\n".join(lines)

@@ -104,10 +104,10 @@ _CURVE = """
 
 def test_another_occt_loads_with_the_array_hand_over_and_the_same_geometry():
     normal = _run(_CURVE)
-    other = _run("""
+    other = _run(textwrap.dedent("""
         from fairsplines_setup import record
         record.occt_version = lambda: "7.0.0"    # FreeCAD now runs another OpenCASCADE
-        """ + _CURVE)
+        """) + textwrap.dedent(_CURVE))
     assert normal.returncode == 0 and other.returncode == 0, normal.stderr + other.stderr
     assert "BRIDGE True []" in normal.stdout
     assert "BRIDGE False" in other.stdout and "FreeCAD runs 7.0.0" in other.stdout
