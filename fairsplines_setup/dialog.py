@@ -205,11 +205,11 @@ def make_dialog(reason, kernel_loaded=False, parent=None):
 
 def offer_build(reason, kernel_loaded=False):
     """Show the dialog over FreeCAD's main window until closed; True when a kernel was built."""
-    import FreeCADGui
-
-    dialog = make_dialog(reason, kernel_loaded, FreeCADGui.getMainWindow())
+    dialog = make_dialog(reason, kernel_loaded, _qt().main_window())
     dialog.exec_() if hasattr(dialog, "exec_") else dialog.exec()
-    return dialog.fairsplines_state["built"]
+    built = dialog.fairsplines_state["built"]
+    dialog.deleteLater()
+    return built
 
 
 COMMAND = "FairSplines_BuildKernel"
