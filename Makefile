@@ -126,7 +126,7 @@ translations:
 
 # flake8 over every Python file of the repository (configuration: .flake8, 120 columns);
 # Debian's python3-flake8, which make deps installs.
-PY_SOURCES = freecad_workbench tests bench tools demo fuzz Init.py InitGui.py
+PY_SOURCES = freecad_workbench fairsplines_setup tests bench tools demo fuzz Init.py InitGui.py
 lint: deps
 	$(PYTHON) -m flake8 $(PY_SOURCES)
 

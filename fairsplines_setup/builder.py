@@ -138,7 +138,8 @@ def main(argv=None):
             print(f"[{percent:3d}%] {line}", flush=True)
 
     result = build(show, kernel_dir=args[0] if args else None)
-    print(f"{'built' if result.ok else 'FAILED'} in {result.seconds:.0f} s: {result.kernel_dir} (log {result.log_path})")
+    verdict = "built" if result.ok else "FAILED"
+    print(f"{verdict} in {result.seconds:.0f} s: {result.kernel_dir} (log {result.log_path})")
     if not result.ok:
         print(result.tail)
     return 0 if result.ok else 1
