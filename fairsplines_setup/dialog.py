@@ -65,11 +65,12 @@ def make_dialog(reason, kernel_loaded=False, parent=None):
 
     intro = QtWidgets.QLabel(translate(
         CONTEXT, "FairSplines computes its curves and surfaces in a compiled kernel. It is not built for "
-        "this FreeCAD yet. It can be built here, into your own FreeCAD folder, in a few minutes; "
-        "no administrator rights are needed for the build itself."))
+        "this FreeCAD yet. It can be built here, into your own FreeCAD folder: a few minutes on a "
+        "recent computer, up to a quarter of an hour on a slow one. No administrator rights are "
+        "needed for the build itself."))
     intro.setWordWrap(True)
     layout.addWidget(intro)
-    why = QtWidgets.QLabel(reason)
+    why = QtWidgets.QLabel(reason.split("\nActivate the FairSplines workbench")[0])  # (this is it)
     why.setObjectName("reason")
     why.setWordWrap(True)
     why.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)

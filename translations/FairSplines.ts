@@ -413,7 +413,7 @@
     </message>
     <message>
         <location filename="../fairsplines_setup/dialog.py"/>
-        <source>FairSplines computes its curves and surfaces in a compiled kernel. It is not built for this FreeCAD yet. It can be built here, into your own FreeCAD folder, in a few minutes; no administrator rights are needed for the build itself.</source>
+        <source>FairSplines computes its curves and surfaces in a compiled kernel. It is not built for this FreeCAD yet. It can be built here, into your own FreeCAD folder: a few minutes on a recent computer, up to a quarter of an hour on a slow one. No administrator rights are needed for the build itself.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
