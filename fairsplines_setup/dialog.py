@@ -116,6 +116,8 @@ def make_dialog(reason, kernel_loaded=False, parent=None):
     build.setObjectName("build")
     close = QtWidgets.QPushButton(translate(CONTEXT, "Close"))
     close.setObjectName("close")
+    for button in (build, close, copy, recheck):  # the whole text, whatever the style's margins (Qt6)
+        button.setMinimumWidth(button.fontMetrics().boundingRect(button.text()).width() + 32)
     buttons.addStretch(1)
     buttons.addWidget(build)
     buttons.addWidget(close)
