@@ -92,7 +92,7 @@ def build(progress=None, kernel_dir=None, jobs=None, cmake="cmake", source_dir=S
     start = time.monotonic()
     report = progress or (lambda fraction, line: None)
     ok = True
-    with open(log_path, "w", encoding="utf-8") as log:
+    with open(log_path, "w", encoding="utf-8", buffering=1) as log:  # line by line: a crash keeps the log
         for step, command in enumerate(commands(kernel_dir, build_dir, jobs or default_jobs(), cmake, source_dir)):
             log.write("$ " + " ".join(command) + "\n")
             log.flush()
