@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import sys
 from collections import namedtuple
 from typing import TYPE_CHECKING, Any, Sequence, Union
 
@@ -17,12 +18,17 @@ if TYPE_CHECKING:  # names of the annotations only: FreeCAD and Part load when a
     import FreeCAD
     import Part
 
+from fairsplines_setup import record as _record
+
+# The kernel built for this FreeCAD: the package's own (make build) or the first-run build's
+# in the user's data folder; KernelUnavailable (an ImportError) says what was found instead.
+# BRIDGE_OFF: why the fast hand-over is off (the kernel's OpenCASCADE is not FreeCAD's).
+BRIDGE_OFF = _record.activate(sys.modules[__package__].__path__)
 try:
     from . import _kernel
-except ImportError as exc:  # pragma: no cover - only when the kernel is not built
-    raise ImportError(
-        "the FairSplines C++ kernel (freecad_workbench/_kernel*.so) is missing or was built for another "
-        "Python: run 'make build' with /usr/bin/python3 (" + str(exc) + ")"
+except ImportError as exc:  # a module that matches the record but does not load (a missing library)
+    raise _record.KernelUnavailable(
+        _record.unavailable_message() + "\nImporting it failed: " + str(exc)
     ) from exc
 
 # The exceptions of the macro API (errors.py re-exports them): the binding translates the
@@ -379,7 +385,11 @@ def blend_result_arrays(complex_, single=True):
     return BlendResult(patches, shell, surface_to_part(surface) if surface is not None else None)
 
 
-def _load_bridge():
+def _load_bridge(off=None):
+    """The SWIG bridge, or None: not built, or `off` (default BRIDGE_OFF) says the kernel's
+    OpenCASCADE may not be FreeCAD's (a shape passed by pointer needs the same OCCT)."""
+    if not _record.bridge_allowed(BRIDGE_OFF if off is None else off):
+        return None
     try:
         from . import occ_bridge
     except ImportError:

@@ -1,5 +1,5 @@
 """Pictures of the whole FreeCAD main window, at its default layout, with each FairSplines
-task panel open in the side panel (and a fair blend with its comb): the README's GUI
+task panel open in the side panel (and a fair blend with its comb): docs/GUI.md's
 section shows them. Run under a virtual display:
 
     xvfb-run -a -s "-screen 0 1600x1000x24" /usr/bin/python3 tools/gui_screenshots.py [OUT_DIR] [--surface]

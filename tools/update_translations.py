@@ -6,7 +6,7 @@
     /usr/bin/python3 tools/update_translations.py --untranslated   # user-visible texts not
                                                              # passed through translate()
 
-It reads every .py under freecad_workbench/ and InitGui.py with Python's ast module (no
+It reads every .py under freecad_workbench/, fairsplines_setup/ and InitGui.py with Python's ast module (no
 pylupdate or lupdate needed, the same result on every machine) and takes each call
     translate("Context", "text")                 FreeCAD.Qt.translate, QCoreApplication.translate
     QT_TRANSLATE_NOOP("Context", "text")         texts FreeCAD translates later (GetResources)
@@ -47,11 +47,13 @@ TRANSLATE_CALLS = {
 
 
 def source_files(repo=REPO):
-    """The files scanned: InitGui.py and every .py under freecad_workbench/, sorted."""
+    """The files scanned: InitGui.py and every .py under freecad_workbench/ and
+    fairsplines_setup/ (the first-run dialog), sorted."""
     paths = [os.path.join(repo, "InitGui.py")]
-    for folder, dirs, files in os.walk(os.path.join(repo, "freecad_workbench")):
-        dirs[:] = sorted(d for d in dirs if d != "__pycache__")
-        paths.extend(os.path.join(folder, f) for f in files if f.endswith(".py"))
+    for package in ("freecad_workbench", "fairsplines_setup"):
+        for folder, dirs, files in os.walk(os.path.join(repo, package)):
+            dirs[:] = sorted(d for d in dirs if d != "__pycache__")
+            paths.extend(os.path.join(folder, f) for f in files if f.endswith(".py"))
     return sorted(p for p in paths if os.path.isfile(p))
 
 

@@ -170,8 +170,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Build the kernel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Building...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>C2: (6,5) strip to bicubic NURBS (Section 4.2); C1: (4,2) double strip to biquadratic NURBS (Section 5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Check again</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -195,6 +210,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Close</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/iso_combs.py"/>
         <source>Combs on isolines</source>
         <translation type="unfinished"></translation>
@@ -207,6 +227,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Continuous in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Copy</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -384,6 +409,16 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/form.py"/>
         <source>Failed: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>FairSplines computes its curves and surfaces in a compiled kernel. It is not built for this FreeCAD yet. It can be built here, into your own FreeCAD folder: a few minutes on a recent computer, up to a quarter of an hour on a slow one. No administrator rights are needed for the build itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>FairSplines: build the geometry kernel</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -627,7 +662,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/commands/common.py"/>
-        <source>More in the FairSplines README, section “{}”:
+        <source>More in FairSplines&apos; documentation, section “{}”:
 {}</source>
         <translation type="unfinished"></translation>
     </message>
@@ -834,6 +869,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Run this in a terminal (it asks for your password), then press Check again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>Run this piece from its end to its start</source>
         <translation type="unfinished"></translation>
@@ -982,6 +1022,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>The OpenCASCADE headers are not the version FreeCAD runs ({version}): the kernel will hand shapes over as arrays (slower, as exact).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>The build failed. The last lines of the compiler&apos;s output are below; the full log is {log}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
         <source>The curve&apos;s control points, as where it starts and the step to each next one. A step that would make the curvature change direction is moved at once to the nearest one that keeps it rising (or falling); the last column says how far.</source>
         <translation type="unfinished"></translation>
@@ -989,6 +1039,21 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/continuity.py"/>
         <source>The faces that meet at the edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>The kernel is built ({seconds} s). FairSplines is ready: close this window.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>The kernel is built ({seconds} s). Restart FreeCAD to use it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>The kernel is built for this FreeCAD.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1084,6 +1149,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>What the build needs:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <source>Where the curve&apos;s own origin lies (its Placement)</source>
         <translation type="unfinished"></translation>
@@ -1130,8 +1200,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>found: {name}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>meet end to start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>missing (optional): {name}, package {package}: {why}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>missing: {name}, package {package}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1230,6 +1315,19 @@ Set it up in the panel; zebra stripes show the seams.</source>
     <message>
         <location filename="../freecad_workbench/gui/commands/__init__.py"/>
         <source>Fair blend between two curves, monotone design, blend basic shape</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FairSplines_BuildKernel</name>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Build FairSplines&apos; compiled kernel for this FreeCAD, into your own FreeCAD folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../fairsplines_setup/dialog.py"/>
+        <source>Build the kernel...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

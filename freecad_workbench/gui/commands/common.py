@@ -8,20 +8,34 @@ import FreeCADGui
 from .. import ICON_DIR, icon_path
 from ..comb import edges_of
 
-README = os.path.join(os.path.dirname(ICON_DIR), "README.md")
+ROOT = os.path.dirname(ICON_DIR)
+README = os.path.join(ROOT, "README.md")
 QT_TRANSLATE_NOOP = FreeCAD.Qt.QT_TRANSLATE_NOOP
+_HELP_FILES = {}  # section heading -> the documentation file that holds it
+
+
+def help_file(section):
+    """The documentation file (README.md, or one in docs/) with a heading `section`."""
+    if not _HELP_FILES:
+        docs = os.path.join(ROOT, "docs")
+        for path in [README] + sorted(os.path.join(docs, f) for f in os.listdir(docs) if f.endswith(".md")):
+            with open(path, encoding="utf-8") as f:
+                for line in f:
+                    if line.startswith("#"):
+                        _HELP_FILES.setdefault(line.lstrip("#").strip(), path)
+    return _HELP_FILES.get(section, README)
 
 
 def resources(name, menu_text, tool_tip, section, icon=None, accel=None):
     """GetResources of a command: its icon (named after the command), menu text and tool
     tip (translated in the command's context), and What's This help that points to the
-    README section describing it."""
-    more = FreeCAD.Qt.translate("FairSplines", "More in the FairSplines README, section \u201c{}\u201d:\n{}")
+    documentation section (README.md or docs/) describing it."""
+    more = FreeCAD.Qt.translate("FairSplines", "More in FairSplines' documentation, section \u201c{}\u201d:\n{}")
     result = {
         "Pixmap": icon_path(icon or name),
         "MenuText": menu_text,
         "ToolTip": tool_tip,
-        "WhatsThis": f"{FreeCAD.Qt.translate(name, tool_tip)}\n\n{more.format(section, README)}",
+        "WhatsThis": f"{FreeCAD.Qt.translate(name, tool_tip)}\n\n{more.format(section, help_file(section))}",
     }
     if accel:
         result["Accel"] = accel
