@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <gp_Pnt.hxx>
+#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -399,6 +400,8 @@ private:
     bounds.normal = normal_;
     bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
+    const BSplineCurve unthinned = curve;
+    const std::vector<Foot> unthinnedFeet = feet;
     Thinning th = bounds;
     th.feet = std::move(feet);  // given back as they were when no knot is removed
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
@@ -417,6 +420,27 @@ private:
       }
     }
     fairConstrained(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
+    bool withSigns = imposeSigns(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
+    if (!withSigns && curve.poles.rows() < unthinned.poles.rows()) {
+      // The thinned knots may be too few for the signs (next to a hairpin): the fit's own.
+      BSplineCurve c = unthinned;
+      std::vector<Foot> cFeet = unthinnedFeet;
+      if (imposeSigns(c, cFeet, sub.index.front(), maxDev, changes, extrema, profile)) {
+        curve = std::move(c), th.feet = std::move(cFeet), bounds.at = sub.index;
+        withSigns = true;
+      }
+    }
+    if (withSigns) {
+      // Knots may have been inserted: the samples at each knot from the samples' feet.
+      const Index m = curve.knots.size() - 1, nq = static_cast<Index>(th.feet.size()), at0 = bounds.at.front();
+      bounds.at.assign(m + 1, at0 + nq - 1);
+      Index k = 0;
+      for (Index j = 0; j < m; ++j) {
+        while (k + 1 < nq && th.feet[k].span < j) ++k;
+        bounds.at[j] = at0 + k;
+      }
+      bounds.at[0] = at0;
+    }
     Fairing f{bounds};
     f.feet = std::move(th.feet);
     fair(curve, f, maxDev, changes, extrema, profile);
@@ -480,6 +504,120 @@ private:
     if (fChanges > changes || fExtrema > extrema) return;
     curve = std::move(best), maxDev = bestDev, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
     feet = std::move(bestFeet);
+  }
+
+  /// Step 11 (fair_fit_signs.cpp): where the fit still has more curvature sign changes than
+  /// the data support, the fairness energy is minimised again under the tolerance with the
+  /// data's sign pattern imposed span by span (turningPattern: a sign per span, one switch span
+  /// between runs of opposite signs), linearised about the present poles and repeated about
+  /// the new ones (up to 8 rounds, the samples projected again each time). Taken at the first
+  /// round whose curve has the data's sign changes with every sample within the tolerance
+  /// (verified by projection). `feet` (at sample index - at0) become the new curve's.
+  bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes,
+                   int& extrema, CurvatureProfile& profile) const {
+    if (!plane_.planar || S_.closed || feet.empty()) return false;
+    if (std::getenv("FS_NO_SIGNS")) return false;  // TEMP
+    const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
+    const int target = static_cast<int>(pattern.size()) - 1;
+    if (std::getenv("FS_DEBUG")) fprintf(stderr, "pattern %d data %d fit %d\n", target, shape_.signChanges, changes);
+    if (pattern.empty() || changes <= target) return false;
+    const double tau = o_.tolerance;
+    BSplineCurve c = curve;
+    std::vector<Foot> cFeet = feet;
+    for (const Foot& ft : cFeet)
+      if (!(ft.d <= tau)) return false;
+    std::vector<char> held;  // samples whose curve point may not slide (sf.hold)
+    int retries = 0, insertions = 0;
+    for (int round = 0; round < 8; ++round) {
+      SplineSpace space{std::vector<double>(c.knots.data(), c.knots.data() + c.knots.size()), false};
+      const Index m = space.spans();
+      // The switches' parameters (their samples' feet), then each span's signs at its ends.
+      std::vector<double> u;
+      for (std::size_t s = 1; s < pattern.size(); ++s) {
+        const Foot& ft = cFeet[pattern[s].at - at0];
+        u.push_back(space.t[ft.span] + ft.x);
+      }
+      SignedFairing sf;
+      sf.spanSign.assign(m, {0, 0});
+      std::size_t next = 0;
+      for (Index j = 0; j < m; ++j) {
+        while (next < u.size() && u[next] <= space.t[j]) ++next;
+        const int s0 = pattern[next].sign;
+        std::size_t inside = next;
+        while (inside < u.size() && u[inside] < space.t[j + 1]) ++inside;
+        if (inside > next + 1 && std::getenv("FS_DEBUG")) fprintf(stderr, "two switches in span %ld\n", (long)j);
+        if (inside > next + 1) return false;  // two switches in one span (not met on the test data)
+        sf.spanSign[j] = {s0, pattern[inside].sign};
+      }
+      sf.tolerance = tau;
+      sf.q = &S_.p;
+      sf.fixed = fixedPoles(c.poles.rows());
+      sf.e1 = plane_.e1, sf.e2 = plane_.e2;
+      // The samples the QP holds: every stride-th (about 2000) and every one beyond half the
+      // tolerance; the rest are verified below.
+      const Index nq = static_cast<Index>(cFeet.size()), stride = std::max<Index>(1, nq / 2000);
+      if (held.empty()) held.assign(nq, 0);
+      for (Index k = 0; k < nq; ++k) {
+        if (k % stride != 0 && !(cFeet[k].d > 0.5 * tau) && !held[k]) continue;
+        sf.sample.push_back(S_.wrap(at0 + k));
+        sf.feet.push_back(cFeet[k]);
+        sf.hold.push_back(held[k]);
+      }
+      Eigen::MatrixX3d P = polesOf(c);
+      if (!fairWithSigns(space, P, sf)) {
+        if (std::getenv("FS_DEBUG")) fprintf(stderr, "qp failed round %d\n", round);
+        return false;
+      }
+      if (std::count(sf.violated.begin(), sf.violated.end(), 1) > 0) {
+        // The signs cannot be met on these spans with these knots (next to a hairpin): each
+        // gets a knot in its middle (the curve unchanged), and the round is done again.
+        if (++insertions > 3) return false;
+        if (std::getenv("FS_DEBUG")) fprintf(stderr, "insert %ld knots\n", (long)std::count(sf.violated.begin(), sf.violated.end(), 1));
+        Handle(Geom_BSplineCurve) occ = toOcct(c);
+        for (Index j = 0; j < m; ++j)
+          if (sf.violated[j]) occ->InsertKnot(0.5 * (space.t[j] + space.t[j + 1]));
+        c = fromOcct(occ);
+        c.poles = c.poles.leftCols(dim_).eval();
+        for (Foot& ft : cFeet) {
+          const double at = space.t[ft.span] + ft.x;
+          const auto it = std::upper_bound(c.knots.data(), c.knots.data() + c.knots.size() - 1, at);
+          ft.span = std::max<Index>(0, (it - c.knots.data()) - 1);
+          ft.x = at - c.knots[ft.span];
+        }
+        --round;
+        continue;
+      }
+      BSplineCurve moved = c;
+      setPoles(moved, P);
+      const SpanPolys SP = spanPolys(moved, toOcct(moved));
+      std::vector<Foot> nFeet(nq);
+      double d = 0.0;
+      bool more = false;
+      for (Index k = 0; k < nq; ++k) {
+        nFeet[k] = projectFoot(SP, S_.p[S_.wrap(at0 + k)], cFeet[k].span, cFeet[k].x);
+        d = std::max(d, nFeet[k].d);
+        if (nFeet[k].d > tau) {
+          // Slid too far where the curve bends: held (and its neighbours) next time.
+          for (Index r = std::max<Index>(0, k - 1); r <= std::min(nq - 1, k + 1); ++r) more |= held[r] < 4, held[r] = static_cast<char>(std::min(4, held[r] + 1));
+        }
+      }
+      if (std::getenv("FS_DEBUG")) fprintf(stderr, "round %d dev %g\n", round, d);
+      if (!(d <= tau)) {
+        if (!more || ++retries > 6) return false;
+        --round;
+        continue;
+      }
+      c = std::move(moved), cFeet = std::move(nFeet);
+      CurvatureProfile cProfile = spanProfile(SP, normal_, 16);
+      const int cChanges = curvatureSignChanges(cProfile);
+      if (std::getenv("FS_DEBUG")) fprintf(stderr, "round %d changes %d\n", round, cChanges);
+      if (cChanges > target) continue;
+      curve = std::move(c), maxDev = d, changes = cChanges, profile = std::move(cProfile);
+      extrema = static_cast<int>(curvatureExtrema(profile).size());
+      feet = std::move(cFeet);
+      return true;
+    }
+    return false;
   }
 
   /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is
