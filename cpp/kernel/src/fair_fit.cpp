@@ -553,6 +553,10 @@ private:
       sf.q = &S_.p;
       sf.fixed = fixedPoles(c.poles.rows());
       sf.e1 = plane_.e1, sf.e2 = plane_.e2;
+      // The signs with a margin of 100 times what the sign count calls 0 (1e-6 of the largest
+      // curvature): the linearisation's error then cannot flip a sign where the optimum is
+      // straight.
+      sf.margin = 1e-4 * spanProfile(spanPolys(c, toOcct(c)), normal_, 16).kappa.cwiseAbs().maxCoeff();
       // The samples the QP holds: every stride-th (about 2000) and every one beyond half the
       // tolerance; the rest are verified below.
       const Index nq = static_cast<Index>(cFeet.size()), stride = std::max<Index>(1, nq / 2000);
@@ -571,7 +575,7 @@ private:
       if (std::count(sf.violated.begin(), sf.violated.end(), 1) > 0) {
         // The signs cannot be met on these spans with these knots (next to a hairpin): each
         // gets a knot in its middle (the curve unchanged), and the round is done again.
-        if (++insertions > 3) return false;
+        if (++insertions > 6) return false;
         if (std::getenv("FS_DEBUG")) fprintf(stderr, "insert %ld knots\n", (long)std::count(sf.violated.begin(), sf.violated.end(), 1));
         Handle(Geom_BSplineCurve) occ = toOcct(c);
         for (Index j = 0; j < m; ++j)

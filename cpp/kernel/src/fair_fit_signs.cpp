@@ -188,6 +188,13 @@ bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations) {
     Eigen::VectorXd dx, dy, dl;
     Eigen::VectorXd comp = -y.cwiseProduct(lambda);
     if (!solve(rd, rp, comp, dx, dy, dl)) return false;
+    if (it == 0) {
+      // Mehrotra's starting point (Nocedal & Wright, 16.6): the slacks and multipliers of the
+      // first affine step, at least 1.
+      for (Index k = 0; k < m; ++k)
+        y[k] = std::max(1.0, std::abs(y[k] + dy[k])), lambda[k] = std::max(1.0, std::abs(lambda[k] + dl[k]));
+      continue;
+    }
     const double aAff = std::min(stepTo(y, dy), stepTo(lambda, dl));
     const double muAff = (y + aAff * dy).dot(lambda + aAff * dl) / static_cast<double>(m);
     const double sigma = std::pow(muAff / mu, 3.0);
@@ -357,6 +364,9 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
         grad[k][2 * p + 1] = hk * (W(2, p) * u[k].x() + W(3, p) * v[k].x());
       }
     }
+    // The margin: a curvature of f.margin at the span's middle speed.
+    const Eigen::Vector2d mid = c[1] + c[2] * h + 0.75 * c[3] * h * h;
+    const double speed3 = std::pow(mid.norm(), 3.0);
     // b_0 = A_0, b_1 = A_0 + A_1 / 3, b_2 = A_0 + 2 A_1 / 3 + A_2 / 3, b_3 = A_0 + A_1 + A_2 + A_3.
     const double B[4][4] = {{1, 0, 0, 0}, {1, 1.0 / 3, 0, 0}, {1, 2.0 / 3, 1.0 / 3, 0}, {1, 1, 1, 1}};
     for (int k = 0; k < 4; ++k) {
@@ -374,7 +384,7 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
       norm = std::sqrt(norm);
       if (!(norm > 0.0)) continue;
       for (double& a : row.a) a /= norm;
-      row.b = -s * b / norm;
+      row.b = (f.margin * speed3 - s * b) / norm;
       // Elastic (l1 penalty, the slack's own row keeps it >= 0): a linearisation may have no
       // feasible point where the signs' exact set has one.
       row.col[8] = 2 * nf + slacks, row.a[8] = 1.0;
