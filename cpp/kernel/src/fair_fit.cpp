@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <gp_Pnt.hxx>
-#include <cstdlib>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -175,6 +174,7 @@ public:
     result.curve = std::move(curve);
     result.maxDeviation = maxDev;
     result.signChanges = changes;
+    if (imposed_) result.dataSignChanges = *imposed_;  // the pattern step 11 imposed
     result.curvatureExtrema = extrema;
     result.pinned = static_cast<int>(std::count(sub.pinned.begin(), sub.pinned.end(), 1));
     return result;
@@ -515,17 +515,19 @@ private:
   /// (verified by projection). `feet` (at sample index - at0) become the new curve's.
   bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes,
                    int& extrema, CurvatureProfile& profile) const {
-    if (!plane_.planar || S_.closed || feet.empty()) return false;
-    if (std::getenv("FS_NO_SIGNS")) return false;  // TEMP
+    // End tangents and curvatures may force turns the data lack: their fit keeps its signs.
+    if (!plane_.planar || S_.closed || feet.empty() || startT_ || endT_ || changes == 0) return false;
     const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
     const int target = static_cast<int>(pattern.size()) - 1;
-    if (std::getenv("FS_DEBUG")) fprintf(stderr, "pattern %d data %d fit %d\n", target, shape_.signChanges, changes);
     if (pattern.empty() || changes <= target) return false;
     const double tau = o_.tolerance;
     BSplineCurve c = curve;
     std::vector<Foot> cFeet = feet;
     for (const Foot& ft : cFeet)
       if (!(ft.d <= tau)) return false;
+    // Its own work bound, in QP rows times interior point iterations: about 100 sample
+    // projections per sample (the QPs fail past it and the fit keeps its signs).
+    double work = 100.0 * static_cast<double>(S_.n) + 1e6;
     std::vector<char> held;  // samples whose curve point may not slide (sf.hold)
     int retries = 0, insertions = 0;
     for (int round = 0; round < 8; ++round) {
@@ -545,7 +547,6 @@ private:
         const int s0 = pattern[next].sign;
         std::size_t inside = next;
         while (inside < u.size() && u[inside] < space.t[j + 1]) ++inside;
-        if (inside > next + 1 && std::getenv("FS_DEBUG")) fprintf(stderr, "two switches in span %ld\n", (long)j);
         if (inside > next + 1) return false;  // two switches in one span (not met on the test data)
         sf.spanSign[j] = {s0, pattern[inside].sign};
       }
@@ -568,15 +569,14 @@ private:
         sf.hold.push_back(held[k]);
       }
       Eigen::MatrixX3d P = polesOf(c);
-      if (!fairWithSigns(space, P, sf)) {
-        if (std::getenv("FS_DEBUG")) fprintf(stderr, "qp failed round %d\n", round);
-        return false;
-      }
+      sf.work = work;
+      const bool solved = fairWithSigns(space, P, sf);
+      work = sf.work;
+      if (!solved) return false;
       if (std::count(sf.violated.begin(), sf.violated.end(), 1) > 0) {
         // The signs cannot be met on these spans with these knots (next to a hairpin): each
         // gets a knot in its middle (the curve unchanged), and the round is done again.
         if (++insertions > 6) return false;
-        if (std::getenv("FS_DEBUG")) fprintf(stderr, "insert %ld knots\n", (long)std::count(sf.violated.begin(), sf.violated.end(), 1));
         Handle(Geom_BSplineCurve) occ = toOcct(c);
         for (Index j = 0; j < m; ++j)
           if (sf.violated[j]) occ->InsertKnot(0.5 * (space.t[j] + space.t[j + 1]));
@@ -601,11 +601,10 @@ private:
         nFeet[k] = projectFoot(SP, S_.p[S_.wrap(at0 + k)], cFeet[k].span, cFeet[k].x);
         d = std::max(d, nFeet[k].d);
         if (nFeet[k].d > tau) {
-          // Slid too far where the curve bends: held (and its neighbours) next time.
+          // Slid too far where the curve bends: it and its neighbours slide less next time.
           for (Index r = std::max<Index>(0, k - 1); r <= std::min(nq - 1, k + 1); ++r) more |= held[r] < 4, held[r] = static_cast<char>(std::min(4, held[r] + 1));
         }
       }
-      if (std::getenv("FS_DEBUG")) fprintf(stderr, "round %d dev %g\n", round, d);
       if (!(d <= tau)) {
         if (!more || ++retries > 6) return false;
         --round;
@@ -614,11 +613,11 @@ private:
       c = std::move(moved), cFeet = std::move(nFeet);
       CurvatureProfile cProfile = spanProfile(SP, normal_, 16);
       const int cChanges = curvatureSignChanges(cProfile);
-      if (std::getenv("FS_DEBUG")) fprintf(stderr, "round %d changes %d\n", round, cChanges);
       if (cChanges > target) continue;
       curve = std::move(c), maxDev = d, changes = cChanges, profile = std::move(cProfile);
       extrema = static_cast<int>(curvatureExtrema(profile).size());
       feet = std::move(cFeet);
+      imposed_ = target;
       return true;
     }
     return false;
@@ -753,6 +752,7 @@ private:
   std::optional<Vector3d> normal_;  // the data's plane normal, for the signs of curvature (planar data)
   std::vector<Vector3d> planar_;
   DataShape shape_;
+  mutable std::optional<int> imposed_;  // the sign changes of the data's pattern, when step 11 imposed it
 };
 
 // ---------------------------------------------------------------------------------------

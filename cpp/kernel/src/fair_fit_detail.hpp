@@ -323,11 +323,14 @@ struct SignedFairing {
   std::vector<std::array<int, 2>> spanSign;  // per span: the sign at its start and at its end (0: free)
   Vector3d e1 = Vector3d::UnitX(), e2 = Vector3d::UnitY();
   int iterations = 200;  // interior point iterations at most
+  double work = 0.0;     // rows times iterations left to spend (in and out); the QP fails past it
   /// Let each curve point slide along the present tangent (up to 4 tolerances, less where the
   /// curve bends), held within 0.95 of the tolerance across it: the distance is then only
   /// about within the tolerance, and the caller verifies it. Otherwise the 16-gon.
   bool slide = true;
-  std::vector<char> hold;  // per foot: held in its 16-gon even when sliding
+  /// Per foot: how often its slide went beyond the tolerance (each time the slide is 0.3 times
+  /// shorter and the bound across 0.05 tighter, down to 0.8).
+  std::vector<char> hold;
   double margin = 0.0;     // the signed curvature asked for at least (Bernstein coefficients over speed^3)
   bool converged = false;
   std::vector<char> violated;  // out, per span: its signs could not be met (elastic slack used)

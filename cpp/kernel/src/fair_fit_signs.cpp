@@ -21,12 +21,9 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
 
 #include "fair_fit_detail.hpp"
-#include "work_budget.hpp"
 
 namespace fairsplines::detail::fairfit {
 
@@ -117,7 +114,7 @@ double rowDot(const QpRow& r, const Eigen::VectorXd& x) {
 /// Mehrotra's predictor-corrector (Nocedal & Wright, Algorithm 16.4) from x (any point: the
 /// slacks start positive). Returns whether it converged (primal and dual residuals and the
 /// mean complementarity below 1e-9 in the problem's scaled units); x is the last iterate.
-bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations) {
+bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations, double& work) {
   const Index nv = x.size(), m = static_cast<Index>(qp.rows.size());
   if (m == 0) return false;
   Eigen::VectorXd y(m), lambda = Eigen::VectorXd::Ones(m);
@@ -154,7 +151,8 @@ bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations) {
   };
   const double gScale = 1.0 + qp.g.lpNorm<Eigen::Infinity>();
   for (int it = 0; it < maxIterations; ++it) {
-    detail::WorkBudget::spend(static_cast<double>(m) / 4.0);
+    work -= static_cast<double>(m);  // the caller's own bound (a row costs about a sample projection)
+    if (!(work >= 0.0)) return false;
     // Residuals: dual r_d = H x + g - A^T lambda, primal r_p = A x - y - b.
     Eigen::VectorXd rd = qp.H * x + qp.g, rp(m);
     for (Index k = 0; k < m; ++k) {
@@ -164,7 +162,6 @@ bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations) {
         if (r.col[c] >= 0) rd[r.col[c]] -= r.a[c] * lambda[k];
     }
     const double mu = y.dot(lambda) / static_cast<double>(m);
-    if (std::getenv("FS_DEBUG2")) fprintf(stderr, "  ipm %d rp %g rd %g mu %g\n", it, rp.lpNorm<Eigen::Infinity>(), rd.lpNorm<Eigen::Infinity>(), mu);
     if (rp.lpNorm<Eigen::Infinity>() <= 1e-9 && rd.lpNorm<Eigen::Infinity>() <= 1e-9 * gScale && mu <= 1e-11)
       return true;
     // H + A^T D A, span blocks of 8 x 8.
@@ -338,8 +335,6 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
   for (Index j = 0; j < m; ++j) {
     const int s0 = f.spanSign[j][0], s1 = f.spanSign[j][1];
     if (s0 == 0 && s1 == 0) continue;
-    if (const char* r = std::getenv("FS_SPANS")) { long a, b; sscanf(r, "%ld,%ld", &a, &b); if (j < a || j > b) continue; }
-    if (std::getenv("FS_DEBUG")) fprintf(stderr, "span %ld [%g %g] signs %d %d\n", (long)j, S.knot(j), S.knot(j+1), s0, s1);
     const SpanWeights W = spanWeights(S, j);
     const double h = S.knot(j + 1) - S.knot(j);
     // Present coefficients c_k in plane coordinates (2D).
@@ -414,7 +409,7 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
     }
   }
   Eigen::VectorXd x = Eigen::VectorXd::Zero(2 * nf + slacks);
-  f.converged = solveQp(qp, x, f.iterations);
+  f.converged = solveQp(qp, x, f.iterations, f.work);
   f.violated.assign(m, 0);
   if (f.converged)
     for (Index k = 0; k < slacks; ++k)
