@@ -280,9 +280,10 @@ void roadRate(double tol) {
     const Row ro = occt([&] { return GeomAPI_PointsToBSpline(pts, 3, 8, GeomAbs_C2, tol).Curve(); }, q, 1);
     occ += ro.note.empty() && ro.signChanges == 3;
   }
-  std::printf("hairpin roads, %d seeds, tolerance %.3g: exactly the road's 3 sign changes: fair fit %d/%d (%.0f %%, "
-              "largest deviation %.3g, mean time %.1f ms), OCCT PointsToBSpline %d/%d\n",
-              seeds, tol, fair, seeds, 100.0 * fair / seeds, worstFair, 1e3 * fairSeconds / seeds, occ, seeds);
+  std::printf(
+      "hairpin roads, %d seeds, tolerance %.3g: exactly the road's 3 sign changes: fair fit %d/%d (%.0f %%, "
+      "largest deviation %.3g, mean time %.1f ms), OCCT PointsToBSpline %d/%d\n",
+      seeds, tol, fair, seeds, 100.0 * fair / seeds, worstFair, 1e3 * fairSeconds / seeds, occ, seeds);
 }
 
 }  // namespace

@@ -400,8 +400,11 @@ private:
     bounds.normal = normal_;
     bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
-    const BSplineCurve unthinned = curve;
-    const std::vector<Foot> unthinnedFeet = feet;
+    // Step 11 may go back to the fit before thinning (a copy only where it may run: a fit
+    // without sign changes never gets one, and 10^6 samples' feet are worth not copying).
+    const bool mayImpose = changes > 0 && plane_.planar && !S_.closed && !startT_ && !endT_;
+    const BSplineCurve unthinned = mayImpose ? curve : BSplineCurve{};
+    const std::vector<Foot> unthinnedFeet = mayImpose ? feet : std::vector<Foot>{};
     Thinning th = bounds;
     th.feet = std::move(feet);  // given back as they were when no knot is removed
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
@@ -421,7 +424,7 @@ private:
     }
     fairConstrained(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
     bool withSigns = imposeSigns(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
-    if (!withSigns && curve.poles.rows() < unthinned.poles.rows()) {
+    if (!withSigns && mayImpose && curve.poles.rows() < unthinned.poles.rows()) {
       // The thinned knots may be too few for the signs (next to a hairpin): the fit's own.
       BSplineCurve c = unthinned;
       std::vector<Foot> cFeet = unthinnedFeet;
@@ -513,8 +516,8 @@ private:
   /// the new ones (up to 8 rounds, the samples projected again each time). Taken at the first
   /// round whose curve has the data's sign changes with every sample within the tolerance
   /// (verified by projection). `feet` (at sample index - at0) become the new curve's.
-  bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes,
-                   int& extrema, CurvatureProfile& profile) const {
+  bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes, int& extrema,
+                   CurvatureProfile& profile) const {
     // End tangents and curvatures may force turns the data lack: their fit keeps its signs.
     if (!plane_.planar || S_.closed || feet.empty() || startT_ || endT_ || changes == 0) return false;
     const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
@@ -602,7 +605,8 @@ private:
         d = std::max(d, nFeet[k].d);
         if (nFeet[k].d > tau) {
           // Slid too far where the curve bends: it and its neighbours slide less next time.
-          for (Index r = std::max<Index>(0, k - 1); r <= std::min(nq - 1, k + 1); ++r) more |= held[r] < 4, held[r] = static_cast<char>(std::min(4, held[r] + 1));
+          for (Index r = std::max<Index>(0, k - 1); r <= std::min(nq - 1, k + 1); ++r)
+            more |= held[r] < 4, held[r] = static_cast<char>(std::min(4, held[r] + 1));
         }
       }
       if (!(d <= tau)) {

@@ -266,13 +266,16 @@ bool pinAtKnots(const SplineSpace& S, Eigen::MatrixX3d& P, const std::vector<std
 /// constraint allows (they are convex in P, so the segment from a feasible P stays feasible
 /// up to the first one met): every sample stays within the tolerance at its own foot, and
 /// the result's distances do too (an upper bound). Returns the energy before and after.
-struct ConstrainedFairing {
+/// The samples a constrained fairing holds within the tolerance at their feet, and the poles it keeps.
+struct HeldSamples {
   double tolerance = 0.0;
   const std::vector<Vector3d>* q = nullptr;  // the samples
   std::vector<Index> sample;                 // per foot: its sample index
   std::vector<Foot> feet;                    // span and parameter of each constrained point
   std::vector<char> fixed;                   // per pole
-  int rounds = 200;                          // ADMM iterations at most (fewer, down to 20, above 2000 samples)
+};
+struct ConstrainedFairing : HeldSamples {
+  int rounds = 200;  // ADMM iterations at most (fewer, down to 20, above 2000 samples)
   double energyBefore = 0.0, energyAfter = 0.0;
   int roundsUsed = 0;
 };
@@ -299,27 +302,23 @@ struct SignSwitch {
 /// switch at the heading's extreme (the inflection), in the middle of the stretch whose
 /// headings stay within the noise of it (a straight between opposite turns). Empty when the
 /// heading never moves beyond its noise. Its size - 1 is the number of sign changes.
-std::vector<SignSwitch> turningPattern(const std::vector<Vector3d>& planar, const std::vector<double>& s,
-                                       double sigma);
+std::vector<SignSwitch> turningPattern(const std::vector<Vector3d>& planar, const std::vector<double>& s, double sigma);
 
 /// Span j's polynomial C(t_j + x) = sum_k c_k x^k as weights of its four poles: c_k = sum_r
 /// W(k, r) P_(pole(j, r)).
 using SpanWeights = Eigen::Matrix4d;
 SpanWeights spanWeights(const SplineSpace& S, Index j);
 
-/// One linearisation of the sign-constrained fairing: the poles P move to the least fairness
-/// energy (fairnessEnergy) such that every sample's curve point C(u_i) lies in the regular
-/// 16-gon inscribed in its disc of radius `tolerance` (in the plane e1, e2; the poles' normal
-/// coordinates stay), and the Bernstein coefficients of the curvature numerator C' x C''
-/// (about e1 x e2), linearised about P, have the signs of spanSign: beta_0 the start's,
-/// beta_2 the end's, beta_1 both when they agree (so a span with two different signs
-/// changes sign once). False (P unchanged) when the QP did not converge (infeasible signs).
-struct SignedFairing {
-  double tolerance = 0.0;
-  const std::vector<Vector3d>* q = nullptr;  // the samples
-  std::vector<Index> sample;                 // per foot: its sample index
-  std::vector<Foot> feet;                    // span and parameter of each constrained point
-  std::vector<char> fixed;                   // per pole
+/// One linearisation of the sign-constrained fairing (step 11): the poles P move to the least
+/// fairness energy (fairnessEnergy) such that every sample's curve point lies within its
+/// tolerance rows (sliding along the present tangent, or the 16-gon inscribed in its disc,
+/// in the plane e1, e2; the poles' normal coordinates stay), and the four Bernstein
+/// coefficients of T x C'' on each span (T the present tangent, C'' of the new poles; about
+/// e1 x e2) exceed the margin times the span's speed cubed with the signs of spanSign: the
+/// first the start's, the last the end's, the middle ones both when they agree. The sign rows
+/// are elastic: `violated` names the spans whose rows could not be met. False (P unchanged)
+/// when the QP did not converge within `iterations` or `work`.
+struct SignedFairing : HeldSamples {
   std::vector<std::array<int, 2>> spanSign;  // per span: the sign at its start and at its end (0: free)
   Vector3d e1 = Vector3d::UnitX(), e2 = Vector3d::UnitY();
   int iterations = 200;  // interior point iterations at most
@@ -331,7 +330,7 @@ struct SignedFairing {
   /// Per foot: how often its slide went beyond the tolerance (each time the slide is 0.3 times
   /// shorter and the bound across 0.05 tighter, down to 0.8).
   std::vector<char> hold;
-  double margin = 0.0;     // the signed curvature asked for at least (Bernstein coefficients over speed^3)
+  double margin = 0.0;  // the signed curvature asked for at least (Bernstein coefficients over speed^3)
   bool converged = false;
   std::vector<char> violated;  // out, per span: its signs could not be met (elastic slack used)
 };

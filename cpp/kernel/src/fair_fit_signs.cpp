@@ -3,19 +3,19 @@
 // (sparse noisy roads: small curvatures wave on the straights between curves of opposite
 // turn), the fairness energy of step 10 is minimised again with the data's sign pattern as
 // constraints:
-// - the curvature numerator of a planar cubic span, f(x) = C'(x) x C''(x), is a quadratic
-//   in the span's parameter (the cubic terms cancel: C' x C'' = 2 c1 x c2 + 6 c1 x c3 x +
-//   6 c2 x c3 x^2 for C = c0 + c1 x + c2 x^2 + c3 x^3); it is bilinear in the poles, and its
-//   linearisation about the present poles is again a quadratic in x, linear in the poles;
-// - its Bernstein coefficients beta_0 .. beta_2 bound it (the convex-hull and variation-
-//   diminishing properties): all of one sign make the span's curvature of that sign;
-//   beta_0 of one sign and beta_2 of the other allow exactly one sign change (a switch span);
-// - the tolerance: each sample's curve point C(u_i) within the regular K-gon inscribed in its
-//   disc of radius tolerance (linear, and inside the disc);
-// so each linearisation is a convex QP, solved by a primal-dual interior point method
-// (Mehrotra's predictor-corrector; Nocedal & Wright, Numerical Optimization, 2nd ed.,
-// Algorithm 16.4). The caller repeats it about the new poles (sequential linearisation) and
-// counts the true sign changes of the result.
+// - the curvature numerator of a planar cubic span is C' x C''; with the tangent T = C' of
+//   the present curve frozen, g(x) = T(x) x C''(x) is a cubic in the span's parameter and
+//   linear in the new poles (sequential linearisation: the caller repeats it about the new
+//   poles and counts the true sign changes of the result);
+// - the Bernstein coefficients of g bound it (convex hull; variation diminishing): all of
+//   one sign make the span's curvature of that sign; the first of one sign and the last of
+//   the other, the middle ones free, give the switch span between runs of opposite signs;
+// - the tolerance: each sample's curve point within 0.95 of it across the present tangent
+//   and a few tolerances along it (it may slide along the curve; verified by projection
+//   afterwards), or within the regular 16-gon inscribed in its disc;
+// so each linearisation is a convex QP, the sign rows elastic (an l1 penalty), solved by a
+// primal-dual interior point method (Mehrotra's predictor-corrector; Nocedal & Wright,
+// Numerical Optimization, 2nd ed., Algorithm 16.4, the starting point of 16.6).
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -61,8 +61,10 @@ std::vector<SignSwitch> turningPattern(const std::vector<Vector3d>& planar, cons
     if (dir == 0) {
       if (psi[j] < psi[lo]) lo = j;
       if (psi[j] > psi[hi]) hi = j;
-      if (beyond(lo, j) && psi[j] > psi[lo]) dir = 1, e = j;
-      else if (beyond(hi, j) && psi[j] < psi[hi]) dir = -1, e = j;
+      if (beyond(lo, j) && psi[j] > psi[lo])
+        dir = 1, e = j;
+      else if (beyond(hi, j) && psi[j] < psi[hi])
+        dir = -1, e = j;
       if (dir != 0) out.push_back({-1, dir});
       continue;
     }
@@ -312,7 +314,8 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
       if (speed > 0.0) {
         const Eigen::Vector2d T = d1 / speed;
         const double kappa = std::abs(T.x() * d2.y() - T.y() * d2.x()) / (speed * speed);
-        const double lambda = std::pow(0.3, level) * (kappa > 0.0 ? std::min(4.0 * L, std::sqrt(0.1 * L / kappa)) : 4.0 * L);
+        const double lambda =
+            std::pow(0.3, level) * (kappa > 0.0 ? std::min(4.0 * L, std::sqrt(0.1 * L / kappa)) : 4.0 * L);
         const double margin = std::max(0.8, 0.95 - 0.05 * level);
         const double across = T.x() * r1 - T.y() * r0, along = T.x() * r0 + T.y() * r1;
         addRow(span, N, -T.y(), T.x(), across, margin * radius);
@@ -329,9 +332,9 @@ bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f) 
   }
   Index slacks = 0;
   std::vector<Index> slackSpan;  // per elastic slack: its span
-  // The signs: the Bernstein coefficients of the linearised f on each span, sign s times
-  // beta >= 0 (the first with the span's start sign, the last with its end sign, the middle
-  // one only when the two agree).
+  // The signs: the Bernstein coefficients of g on each span, s b_k >= margin speed^3 (the
+  // first with the span's start sign, the last with its end sign, the middle ones only when
+  // the two agree).
   for (Index j = 0; j < m; ++j) {
     const int s0 = f.spanSign[j][0], s1 = f.spanSign[j][1];
     if (s0 == 0 && s1 == 0) continue;
