@@ -402,7 +402,7 @@ private:
 
     // Step 11 may go back to the fit before thinning (a copy only where it may run: a fit
     // without sign changes never gets one, and 10^6 samples' feet are worth not copying).
-    const bool mayImpose = changes > 0 && plane_.planar && !S_.closed && !startT_ && !endT_;
+    const bool mayImpose = signsMayBeImposed(changes);
     const BSplineCurve unthinned = mayImpose ? curve : BSplineCurve{};
     const std::vector<Foot> unthinnedFeet = mayImpose ? feet : std::vector<Foot>{};
     Thinning th = bounds;
@@ -516,10 +516,17 @@ private:
   /// the new ones (up to 8 rounds, the samples projected again each time). Taken at the first
   /// round whose curve has the data's sign changes with every sample within the tolerance
   /// (verified by projection). `feet` (at sample index - at0) become the new curve's.
+  /// Where step 11 runs: open planar data of at most 20000 samples whose fit has a sign
+  /// change. End tangents and curvatures may force turns the data lack (their fit keeps its
+  /// signs); dense data are left to the straight runs of step 4 (each round projects every
+  /// sample: on 10^6 samples that would cost a quarter of the whole fit).
+  bool signsMayBeImposed(int changes) const {
+    return changes > 0 && plane_.planar && !S_.closed && !startT_ && !endT_ && S_.n <= 20000;
+  }
+
   bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes, int& extrema,
                    CurvatureProfile& profile) const {
-    // End tangents and curvatures may force turns the data lack: their fit keeps its signs.
-    if (!plane_.planar || S_.closed || feet.empty() || startT_ || endT_ || changes == 0) return false;
+    if (!signsMayBeImposed(changes) || feet.empty()) return false;
     const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
     const int target = static_cast<int>(pattern.size()) - 1;
     if (pattern.empty() || changes <= target) return false;
