@@ -549,16 +549,36 @@ private:
         const Foot& ft = cFeet[pattern[s].at - at0];
         u.push_back(space.t[ft.span] + ft.x);
       }
+      // New knots (the curve unchanged), the feet moved to their spans.
+      auto insertKnots = [&](const std::vector<double>& at) {
+        Handle(Geom_BSplineCurve) occ = toOcct(c);
+        for (double x : at) occ->InsertKnot(x);
+        c = fromOcct(occ);
+        c.poles = c.poles.leftCols(dim_).eval();
+        for (Foot& ft : cFeet) {
+          const double v = space.t[ft.span] + ft.x;
+          const auto it = std::upper_bound(c.knots.data(), c.knots.data() + c.knots.size() - 1, v);
+          ft.span = std::max<Index>(0, (it - c.knots.data()) - 1);
+          ft.x = v - c.knots[ft.span];
+        }
+      };
       SignedFairing sf;
       sf.spanSign.assign(m, {0, 0});
       std::size_t next = 0;
+      std::vector<double> between;  // knots between two switches in one span
       for (Index j = 0; j < m; ++j) {
         while (next < u.size() && u[next] <= space.t[j]) ++next;
         const int s0 = pattern[next].sign;
         std::size_t inside = next;
         while (inside < u.size() && u[inside] < space.t[j + 1]) ++inside;
-        if (inside > next + 1) return false;  // two switches in one span (not met on the test data)
+        for (std::size_t k = next; k + 1 < inside; ++k) between.push_back(0.5 * (u[k] + u[k + 1]));
         sf.spanSign[j] = {s0, pattern[inside].sign};
+      }
+      if (!between.empty()) {
+        if (++insertions > 6) return false;
+        insertKnots(between);
+        --round;
+        continue;
       }
       sf.tolerance = tau;
       sf.q = &S_.p;
@@ -587,17 +607,10 @@ private:
         // The signs cannot be met on these spans with these knots (next to a hairpin): each
         // gets a knot in its middle (the curve unchanged), and the round is done again.
         if (++insertions > 6) return false;
-        Handle(Geom_BSplineCurve) occ = toOcct(c);
+        std::vector<double> middles;
         for (Index j = 0; j < m; ++j)
-          if (sf.violated[j]) occ->InsertKnot(0.5 * (space.t[j] + space.t[j + 1]));
-        c = fromOcct(occ);
-        c.poles = c.poles.leftCols(dim_).eval();
-        for (Foot& ft : cFeet) {
-          const double at = space.t[ft.span] + ft.x;
-          const auto it = std::upper_bound(c.knots.data(), c.knots.data() + c.knots.size() - 1, at);
-          ft.span = std::max<Index>(0, (it - c.knots.data()) - 1);
-          ft.x = at - c.knots[ft.span];
-        }
+          if (sf.violated[j]) middles.push_back(0.5 * (space.t[j] + space.t[j + 1]));
+        insertKnots(middles);
         --round;
         continue;
       }
