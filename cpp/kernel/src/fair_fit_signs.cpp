@@ -164,7 +164,7 @@ bool solveQp(const Qp& qp, Eigen::VectorXd& x, int maxIterations, double& work) 
         if (r.col[c] >= 0) rd[r.col[c]] -= r.a[c] * lambda[k];
     }
     const double mu = y.dot(lambda) / static_cast<double>(m);
-    if (rp.lpNorm<Eigen::Infinity>() <= 1e-9 && rd.lpNorm<Eigen::Infinity>() <= 1e-9 * gScale && mu <= 1e-11)
+    if (rp.lpNorm<Eigen::Infinity>() <= 1e-8 && rd.lpNorm<Eigen::Infinity>() <= 1e-8 * gScale && mu <= 1e-10)
       return true;
     // H + A^T D A, span blocks of 8 x 8.
     Triplets t = base;
