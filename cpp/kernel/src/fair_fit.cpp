@@ -174,6 +174,7 @@ public:
     result.curve = std::move(curve);
     result.maxDeviation = maxDev;
     result.signChanges = changes;
+    if (imposed_) result.dataSignChanges = *imposed_;  // the pattern step 11 imposed
     result.curvatureExtrema = extrema;
     result.pinned = static_cast<int>(std::count(sub.pinned.begin(), sub.pinned.end(), 1));
     return result;
@@ -399,6 +400,11 @@ private:
     bounds.normal = normal_;
     bounds.zeroKappa = profile.kappa.size() > 0 ? 1e-6 * profile.kappa.cwiseAbs().maxCoeff() : 0.0;
 
+    // Step 11 may go back to the fit before thinning (a copy only where it may run: a fit
+    // without sign changes never gets one, and 10^6 samples' feet are worth not copying).
+    const bool mayImpose = signsMayBeImposed(changes);
+    const BSplineCurve unthinned = mayImpose ? curve : BSplineCurve{};
+    const std::vector<Foot> unthinnedFeet = mayImpose ? feet : std::vector<Foot>{};
     Thinning th = bounds;
     th.feet = std::move(feet);  // given back as they were when no knot is removed
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
@@ -417,6 +423,27 @@ private:
       }
     }
     fairConstrained(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
+    bool withSigns = imposeSigns(curve, th.feet, bounds.at.front(), maxDev, changes, extrema, profile);
+    if (!withSigns && mayImpose && curve.poles.rows() < unthinned.poles.rows()) {
+      // The thinned knots may be too few for the signs (next to a hairpin): the fit's own.
+      BSplineCurve c = unthinned;
+      std::vector<Foot> cFeet = unthinnedFeet;
+      if (imposeSigns(c, cFeet, sub.index.front(), maxDev, changes, extrema, profile)) {
+        curve = std::move(c), th.feet = std::move(cFeet), bounds.at = sub.index;
+        withSigns = true;
+      }
+    }
+    if (withSigns) {
+      // Knots may have been inserted: the samples at each knot from the samples' feet.
+      const Index m = curve.knots.size() - 1, nq = static_cast<Index>(th.feet.size()), at0 = bounds.at.front();
+      bounds.at.assign(m + 1, at0 + nq - 1);
+      Index k = 0;
+      for (Index j = 0; j < m; ++j) {
+        while (k + 1 < nq && th.feet[k].span < j) ++k;
+        bounds.at[j] = at0 + k;
+      }
+      bounds.at[0] = at0;
+    }
     Fairing f{bounds};
     f.feet = std::move(th.feet);
     fair(curve, f, maxDev, changes, extrema, profile);
@@ -480,6 +507,144 @@ private:
     if (fChanges > changes || fExtrema > extrema) return;
     curve = std::move(best), maxDev = bestDev, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
     feet = std::move(bestFeet);
+  }
+
+  /// Step 11 (fair_fit_signs.cpp): where the fit still has more curvature sign changes than
+  /// the data support, the fairness energy is minimised again under the tolerance with the
+  /// data's sign pattern imposed span by span (turningPattern: a sign per span, one switch span
+  /// between runs of opposite signs), linearised about the present poles and repeated about
+  /// the new ones (up to 8 rounds, the samples projected again each time). Taken at the first
+  /// round whose curve has the data's sign changes with every sample within the tolerance
+  /// (verified by projection). `feet` (at sample index - at0) become the new curve's.
+  /// Where step 11 runs: open planar data of at most 20000 samples whose fit has a sign
+  /// change. End tangents and curvatures may force turns the data lack (their fit keeps its
+  /// signs); dense data are left to the straight runs of step 4 (each round projects every
+  /// sample: on 10^6 samples that would cost a quarter of the whole fit).
+  bool signsMayBeImposed(int changes) const {
+    return changes > 0 && plane_.planar && !S_.closed && !startT_ && !endT_ && S_.n <= 20000;
+  }
+
+  bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes, int& extrema,
+                   CurvatureProfile& profile) const {
+    if (!signsMayBeImposed(changes) || feet.empty()) return false;
+    const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
+    const int target = static_cast<int>(pattern.size()) - 1;
+    if (pattern.empty() || changes <= target) return false;
+    const double tau = o_.tolerance;
+    BSplineCurve c = curve;
+    std::vector<Foot> cFeet = feet;
+    for (const Foot& ft : cFeet)
+      if (!(ft.d <= tau)) return false;
+    // Its own work bound, in QP rows times interior point iterations: about 100 sample
+    // projections per sample (the QPs fail past it and the fit keeps its signs).
+    double work = 100.0 * static_cast<double>(S_.n) + 1e6;
+    std::vector<char> held;  // samples whose curve point may not slide (sf.hold)
+    int retries = 0, insertions = 0;
+    for (int round = 0; round < 8; ++round) {
+      SplineSpace space{std::vector<double>(c.knots.data(), c.knots.data() + c.knots.size()), false};
+      const Index m = space.spans();
+      // The switches' parameters (their samples' feet), then each span's signs at its ends.
+      std::vector<double> u;
+      for (std::size_t s = 1; s < pattern.size(); ++s) {
+        const Foot& ft = cFeet[pattern[s].at - at0];
+        u.push_back(space.t[ft.span] + ft.x);
+      }
+      // New knots (the curve unchanged), the feet moved to their spans.
+      auto insertKnots = [&](const std::vector<double>& at) {
+        Handle(Geom_BSplineCurve) occ = toOcct(c);
+        for (double x : at) occ->InsertKnot(x);
+        c = fromOcct(occ);
+        c.poles = c.poles.leftCols(dim_).eval();
+        for (Foot& ft : cFeet) {
+          const double v = space.t[ft.span] + ft.x;
+          const auto it = std::upper_bound(c.knots.data(), c.knots.data() + c.knots.size() - 1, v);
+          ft.span = std::max<Index>(0, (it - c.knots.data()) - 1);
+          ft.x = v - c.knots[ft.span];
+        }
+      };
+      SignedFairing sf;
+      sf.spanSign.assign(m, {0, 0});
+      std::size_t next = 0;
+      std::vector<double> between;  // knots between two switches in one span
+      for (Index j = 0; j < m; ++j) {
+        while (next < u.size() && u[next] <= space.t[j]) ++next;
+        const int s0 = pattern[next].sign;
+        std::size_t inside = next;
+        while (inside < u.size() && u[inside] < space.t[j + 1]) ++inside;
+        for (std::size_t k = next; k + 1 < inside; ++k) between.push_back(0.5 * (u[k] + u[k + 1]));
+        sf.spanSign[j] = {s0, pattern[inside].sign};
+      }
+      if (!between.empty()) {
+        if (++insertions > 6) return false;
+        insertKnots(between);
+        --round;
+        continue;
+      }
+      sf.tolerance = tau;
+      sf.q = &S_.p;
+      sf.fixed = fixedPoles(c.poles.rows());
+      sf.e1 = plane_.e1, sf.e2 = plane_.e2;
+      // The signs with a margin of 100 times what the sign count calls 0 (1e-6 of the largest
+      // curvature): the linearisation's error then cannot flip a sign where the optimum is
+      // straight.
+      sf.margin = 1e-4 * spanProfile(spanPolys(c, toOcct(c)), normal_, 16).kappa.cwiseAbs().maxCoeff();
+      // The samples the QP holds: every stride-th (about 2000) and every one beyond half the
+      // tolerance; the rest are verified below.
+      const Index nq = static_cast<Index>(cFeet.size()), stride = std::max<Index>(1, nq / 2000);
+      if (held.empty()) held.assign(nq, 0);
+      for (Index k = 0; k < nq; ++k) {
+        if (k % stride != 0 && !(cFeet[k].d > 0.5 * tau) && !held[k]) continue;
+        sf.sample.push_back(S_.wrap(at0 + k));
+        sf.feet.push_back(cFeet[k]);
+        sf.hold.push_back(held[k]);
+      }
+      Eigen::MatrixX3d P = polesOf(c);
+      sf.work = work;
+      const bool solved = fairWithSigns(space, P, sf);
+      work = sf.work;
+      if (!solved) return false;
+      if (std::count(sf.violated.begin(), sf.violated.end(), 1) > 0) {
+        // The signs cannot be met on these spans with these knots (next to a hairpin): each
+        // gets a knot in its middle (the curve unchanged), and the round is done again.
+        if (++insertions > 6) return false;
+        std::vector<double> middles;
+        for (Index j = 0; j < m; ++j)
+          if (sf.violated[j]) middles.push_back(0.5 * (space.t[j] + space.t[j + 1]));
+        insertKnots(middles);
+        --round;
+        continue;
+      }
+      BSplineCurve moved = c;
+      setPoles(moved, P);
+      const SpanPolys SP = spanPolys(moved, toOcct(moved));
+      std::vector<Foot> nFeet(nq);
+      double d = 0.0;
+      bool more = false;
+      for (Index k = 0; k < nq; ++k) {
+        nFeet[k] = projectFoot(SP, S_.p[S_.wrap(at0 + k)], cFeet[k].span, cFeet[k].x);
+        d = std::max(d, nFeet[k].d);
+        if (nFeet[k].d > tau) {
+          // Slid too far where the curve bends: it and its neighbours slide less next time.
+          for (Index r = std::max<Index>(0, k - 1); r <= std::min(nq - 1, k + 1); ++r)
+            more |= held[r] < 4, held[r] = static_cast<char>(std::min(4, held[r] + 1));
+        }
+      }
+      if (!(d <= tau)) {
+        if (!more || ++retries > 6) return false;
+        --round;
+        continue;
+      }
+      c = std::move(moved), cFeet = std::move(nFeet);
+      CurvatureProfile cProfile = spanProfile(SP, normal_, 16);
+      const int cChanges = curvatureSignChanges(cProfile);
+      if (cChanges > target) continue;
+      curve = std::move(c), maxDev = d, changes = cChanges, profile = std::move(cProfile);
+      extrema = static_cast<int>(curvatureExtrema(profile).size());
+      feet = std::move(cFeet);
+      imposed_ = target;
+      return true;
+    }
+    return false;
   }
 
   /// Fairing (fair_fit_fairing.cpp). The faired curve replaces the fit when every sample is
@@ -611,6 +776,7 @@ private:
   std::optional<Vector3d> normal_;  // the data's plane normal, for the signs of curvature (planar data)
   std::vector<Vector3d> planar_;
   DataShape shape_;
+  mutable std::optional<int> imposed_;  // the sign changes of the data's pattern, when step 11 imposed it
 };
 
 // ---------------------------------------------------------------------------------------

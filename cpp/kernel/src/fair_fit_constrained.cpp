@@ -139,6 +139,18 @@ void energyTriplets(const SplineSpace& S, Triplets& out) {
   }
 }
 
+}  // namespace
+
+SparseMatrix fairnessEnergy(const SplineSpace& S) {
+  Triplets t;
+  energyTriplets(S, t);
+  SparseMatrix E(S.poles(), S.poles());
+  E.setFromTriplets(t.begin(), t.end());
+  return E;
+}
+
+namespace {
+
 double energyOf(const SparseMatrix& E, const Eigen::MatrixX3d& P) { return (P.transpose() * (E * P)).trace(); }
 
 /// Free poles numbered 0 .. nf - 1 (-1 for fixed ones).

@@ -2,6 +2,7 @@
 // samples, local quadratics, noise, plane, curvature signs and straight runs) and measure
 // the curve against it (fair_fit_distance.cpp: span polynomials, sample projection).
 #pragma once
+#include <Eigen/SparseCore>
 #include <Geom_BSplineCurve.hxx>
 #include <array>
 #include <cmath>
@@ -265,16 +266,74 @@ bool pinAtKnots(const SplineSpace& S, Eigen::MatrixX3d& P, const std::vector<std
 /// constraint allows (they are convex in P, so the segment from a feasible P stays feasible
 /// up to the first one met): every sample stays within the tolerance at its own foot, and
 /// the result's distances do too (an upper bound). Returns the energy before and after.
-struct ConstrainedFairing {
+/// The samples a constrained fairing holds within the tolerance at their feet, and the poles it keeps.
+struct HeldSamples {
   double tolerance = 0.0;
   const std::vector<Vector3d>* q = nullptr;  // the samples
   std::vector<Index> sample;                 // per foot: its sample index
   std::vector<Foot> feet;                    // span and parameter of each constrained point
   std::vector<char> fixed;                   // per pole
-  int rounds = 200;                          // ADMM iterations at most (fewer, down to 20, above 2000 samples)
+};
+struct ConstrainedFairing : HeldSamples {
+  int rounds = 200;  // ADMM iterations at most (fewer, down to 20, above 2000 samples)
   double energyBefore = 0.0, energyAfter = 0.0;
   int roundsUsed = 0;
 };
 void fairUnderTolerance(const SplineSpace& S, Eigen::MatrixX3d& P, ConstrainedFairing& f);
+
+/// The fairness energy E of fairUnderTolerance as a (poles x poles) matrix: E(P) = sum over
+/// the coordinates of P_c^T E P_c.
+Eigen::SparseMatrix<double> fairnessEnergy(const SplineSpace& S);
+
+// ---------------------------------------------------------------------------------------
+// The data's curvature signs imposed (fair_fit_signs.cpp, step 11)
+
+/// Where the data's curvature takes a sign: from sample `at` on (-1: from the start), `sign`.
+struct SignSwitch {
+  Index at;
+  int sign;
+};
+
+/// The data's sign pattern (open planar data, in-plane coordinates `planar`, cumulative
+/// chord lengths `s`, noise sigma): the headings of chords k samples long (k: the least whose
+/// mean is 100 sigma), scanned with hysteresis: a turn counts when the heading moves away
+/// from its running extreme by more than 5 deviations of the two headings' noise (sqrt(2)
+/// sigma / chord each). The first move gives the first sign (at = -1); each reversal a
+/// switch at the heading's extreme (the inflection), in the middle of the stretch whose
+/// headings stay within the noise of it (a straight between opposite turns). Empty when the
+/// heading never moves beyond its noise. Its size - 1 is the number of sign changes.
+std::vector<SignSwitch> turningPattern(const std::vector<Vector3d>& planar, const std::vector<double>& s, double sigma);
+
+/// Span j's polynomial C(t_j + x) = sum_k c_k x^k as weights of its four poles: c_k = sum_r
+/// W(k, r) P_(pole(j, r)).
+using SpanWeights = Eigen::Matrix4d;
+SpanWeights spanWeights(const SplineSpace& S, Index j);
+
+/// One linearisation of the sign-constrained fairing (step 11): the poles P move to the least
+/// fairness energy (fairnessEnergy) such that every sample's curve point lies within its
+/// tolerance rows (sliding along the present tangent, or the 16-gon inscribed in its disc,
+/// in the plane e1, e2; the poles' normal coordinates stay), and the four Bernstein
+/// coefficients of T x C'' on each span (T the present tangent, C'' of the new poles; about
+/// e1 x e2) exceed the margin times the span's speed cubed with the signs of spanSign: the
+/// first the start's, the last the end's, the middle ones both when they agree. The sign rows
+/// are elastic: `violated` names the spans whose rows could not be met. False (P unchanged)
+/// when the QP did not converge within `iterations` or `work`.
+struct SignedFairing : HeldSamples {
+  std::vector<std::array<int, 2>> spanSign;  // per span: the sign at its start and at its end (0: free)
+  Vector3d e1 = Vector3d::UnitX(), e2 = Vector3d::UnitY();
+  int iterations = 200;  // interior point iterations at most
+  double work = 0.0;     // rows times iterations left to spend (in and out); the QP fails past it
+  /// Let each curve point slide along the present tangent (up to 4 tolerances, less where the
+  /// curve bends), held within 0.95 of the tolerance across it: the distance is then only
+  /// about within the tolerance, and the caller verifies it. Otherwise the 16-gon.
+  bool slide = true;
+  /// Per foot: how often its slide went beyond the tolerance (each time the slide is 0.3 times
+  /// shorter and the bound across 0.05 tighter, down to 0.8).
+  std::vector<char> hold;
+  double margin = 0.0;  // the signed curvature asked for at least (Bernstein coefficients over speed^3)
+  bool converged = false;
+  std::vector<char> violated;  // out, per span: its signs could not be met (elastic slack used)
+};
+bool fairWithSigns(const SplineSpace& S, Eigen::MatrixX3d& P, SignedFairing& f);
 
 }  // namespace fairsplines::detail::fairfit
