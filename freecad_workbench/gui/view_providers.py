@@ -279,7 +279,16 @@ class ViewProviderProfileTest(ViewProvider):
             self.update_zebra()
 
 
-class ViewProviderBlendShape(ViewProviderProfileTest):
+class ZebraFacesViewProvider(ViewProviderProfileTest):
+    """Every face of the object's shape meshed in the 'Zebra' display mode (the default)."""
+
+    def mesh_zebra(self, obj):
+        from .zebra import update_zebra_faces
+
+        update_zebra_faces(self.zebra, [] if obj.Shape.isNull() else local_shape(obj).Faces)
+
+
+class ViewProviderBlendShape(ZebraFacesViewProvider):
     """The blended shell in the 'Zebra' display mode (the default; gui/zebra.py), every patch
     meshed, so that the stripes show how the basic shape, the transition and the ring join.
     Double-click opens the task panel."""
@@ -287,7 +296,11 @@ class ViewProviderBlendShape(ViewProviderProfileTest):
     ICON = "FairSplines_BlendBasicShape"
     PANEL = ".panels.blend_shape:BlendShapePanel"
 
-    def mesh_zebra(self, obj):
-        from .zebra import update_zebra_faces
 
-        update_zebra_faces(self.zebra, [] if obj.Shape.isNull() else local_shape(obj).Faces)
+class ViewProviderFaceBlend(ZebraFacesViewProvider):
+    """The blend of two faces in the 'Zebra' display mode (the default): its stripes run on
+    into the faces' own where the faces show zebra too (the panel's Zebra button). Double-click
+    opens the task panel."""
+
+    ICON = "FairSplines_BlendFaces"
+    PANEL = ".panels.face_blend:FaceBlendPanel"
