@@ -304,3 +304,24 @@ class ViewProviderFaceBlend(ZebraFacesViewProvider):
 
     ICON = "FairSplines_BlendFaces"
     PANEL = ".panels.face_blend:FaceBlendPanel"
+
+    def mesh_zebra(self, obj):
+        """The blend's normals turned to agree with its first face's along their edge: the
+        stripes (mapped from the normals) then run on into that face's zebra."""
+        import Part
+
+        from .zebra import update_zebra_faces
+
+        faces = [] if obj.Shape.isNull() else local_shape(obj).Faces
+        link = getattr(obj, "FaceA", None)
+        if faces and link:
+            try:
+                face = Part.getShape(link[0]).getElement(link[1][0])
+                blend = obj.Shape.Faces[0]
+                u0, u1, v0, _ = blend.ParameterRange
+                point = blend.valueAt(0.5 * (u0 + u1), v0)
+                if face.normalAt(*face.Surface.parameter(point)).dot(blend.normalAt(0.5 * (u0 + u1), v0)) < 0:
+                    faces = [f.reversed() for f in faces]
+            except Exception:  # a source gone or failing: as the blend is oriented
+                pass
+        update_zebra_faces(self.zebra, faces)

@@ -12,32 +12,20 @@ import FreeCAD
 
 import freecad_workbench as fw
 
+from test_blend_gui import gui, panel_of, run  # tests/gui is on the path
+from test_blend_gui import scene as blend_scene  # noqa: F401  (a fixture, used by name)
+
 NAME = "FairSplines_BlendFaces"
 V = FreeCAD.Vector
 
 
-def gui():
-    import FreeCADGui
-
-    return FreeCADGui
-
-
-def run(name):
-    """Run a command and let the panel it opens afterwards (a zero-delay timer) appear."""
-    g = gui()
-    g.runCommand(name)
-    for _ in range(3):
-        g.updateGui()
-
-
 @pytest.fixture
-def scene(doc):
-    """An active document with undo and two coaxial cylinders, 1 mm apart; afterwards no dialog."""
-    g = gui()
-    doc.UndoMode = 1
-    FreeCAD.setActiveDocument(doc.Name)
-    g.ActiveDocument = g.getDocument(doc.Name)
-    g.Selection.clearSelection()
+def scene(blend_scene):  # noqa: F811  (the fixture imported above, by name)
+    """An active document with undo and two coaxial cylinders, 1 mm apart; afterwards no dialog,
+    no zebra, no continuity check."""
+    from freecad_workbench.gui import continuity, zebra_shape
+
+    doc = blend_scene
     a = doc.addObject("Part::Cylinder", "A")
     a.Radius, a.Height = 1.0, 1.0
     b = doc.addObject("Part::Cylinder", "B")
@@ -45,19 +33,8 @@ def scene(doc):
     b.Placement = FreeCAD.Placement(V(0, 0, 2.0), FreeCAD.Rotation())
     doc.recompute()
     yield doc, a, b
-    from freecad_workbench.gui import continuity, zebra_shape
-
-    if g.Control.activeDialog():
-        gui_doc = g.getDocument(doc.Name)
-        vp = gui_doc.getInEdit() if gui_doc is not None else None
-        panel = getattr(getattr(vp, "Proxy", None), "panel", None) if vp is not None else None
-        if panel is not None:
-            panel.reject()
-        else:
-            g.Control.closeDialog()
     continuity.hide()
     zebra_shape.hide()
-    g.updateGui()
 
 
 def rim(obj, z):
@@ -88,10 +65,6 @@ def blend_by_command(doc, a, b):
     return created[0]
 
 
-def panel_of(obj):
-    return getattr(obj.ViewObject.Proxy, "panel", None)
-
-
 def errors(blend, a, b):
     """OCCT's measure of the blend against each face along its rim (side A at v = 0, B at v = 1)."""
     surface = blend.Shape.Faces[0].Surface
@@ -108,6 +81,26 @@ def cross_speed(obj, s=0.0, u=0.3):
     """|d/dv| of the blend at (u, s), by OCCT: how far it runs along the face at that side."""
     surface = obj.Shape.Faces[0].Surface
     return FreeCAD.Vector(*surface.getDN(u, s, 0, 1)).Length
+
+
+def zebra_normals_point_out(zebra):
+    """Whether every normal of the zebra mesh points away from the cylinders' axis (as their
+    lateral faces' normals do)."""
+    points = np.array([tuple(p.getValue()) for p in zebra.coords.point])
+    normals = np.array([tuple(n.getValue()) for n in zebra.normals.vector])
+    assert len(points) == len(normals) > 100
+    return bool((np.einsum("ij,ij->i", normals[:, :2], points[:, :2]) > 0).all())
+
+
+def test_zebra_normals_follow_the_first_face_whichever_way_the_blend_runs(scene):
+    from freecad_workbench.features.face_blend import make_face_blend
+
+    doc, a, b = scene
+    # from B down to A: the blend surface's own normal points into the cylinders here
+    back = make_face_blend(doc, (b, lateral(b)), (b, rim(b, 2.0)), (a, lateral(a)), (a, rim(a, 1.0)))
+    surface = back.Shape.Faces[0].Surface
+    assert FreeCAD.Vector(*surface.normal(0.5, 0.0)).dot(surface.value(0.5, 0.0) - V(0, 0, 2.0)) < 0
+    assert zebra_normals_point_out(back.ViewObject.Proxy.zebra)
 
 
 def test_command_needs_two_edges_and_the_face_of_each(scene):
@@ -143,6 +136,9 @@ def test_command_creates_a_g2_blend_in_one_undo_step_with_zebra_and_its_panel(sc
     vp = blend.ViewObject.Proxy
     assert isinstance(vp, ViewProviderFaceBlend)
     assert blend.ViewObject.DisplayMode == "Zebra" and vp.zebra.vertex_count > 100
+    # the zebra's normals point as face A's do (out of the cylinders), so that its stripes run on
+    # into the faces' zebra
+    assert zebra_normals_point_out(vp.zebra)
     panel = panel_of(blend)
     assert isinstance(panel, FaceBlendPanel) and gui().Control.activeDialog()
     assert doc.UndoNames[0] == "Create face blend"
@@ -175,8 +171,10 @@ def test_panel_drives_the_blend_and_cancel_restores(scene):
 
     # the depth of side A: off "Fair", then the slider; the derivative across follows
     fair_speed = cross_speed(blend, 0.0)
-    panel.depths[0].fair.setChecked(False)
-    assert blend.ScaleA > 0
+    chosen = blend.Proxy.report.sides[0]["scale"]  # what the fairness search chose
+    assert panel.depths[0].value.text() == f"\u00d7 {chosen:.2f}"
+    panel.depths[0].fair.setChecked(False)  # the slider starts there: the shape hardly moves
+    assert abs(blend.ScaleA - chosen) < 0.05 * chosen, (blend.ScaleA, chosen)
     panel.depths[0].slider.setValue(panel.depths[0].slider.maximum())  # 5 x the default
     assert abs(blend.ScaleA - 5.0) < 1e-9
     deeper = cross_speed(blend, 0.0)
@@ -246,7 +244,7 @@ def test_zebra_on_the_faces_and_the_continuity_check_of_the_joins(scene):
     check = continuity.current()
     assert check is not None
     joins = [r for r in check.records if r.kind == "shared"]
-    # the two rims (sewn: the blend's own seam is a seam, not a join)
+    # the two rims (the blend's own seam is a seam, not a join)
     assert [r.continuity for r in joins] == ["G2", "G2"], joins
     assert "G2" in panel.joins.text()
     panel.continuity.setCurrentIndex(1)  # re-checked after the recompute: the rims are G1 now

@@ -35,9 +35,9 @@ CONTINUITY_LABELS = {
 # The depth slider: multiples of the default magnitude on a log scale, SCALE_MIN to SCALE_MAX.
 SCALE_MIN, SCALE_MAX, SCALE_STEPS = 0.2, 5.0, 100
 SIDES = ("A", "B")
-# The continuity check sews the blend to its faces; sewing a circle to the B-spline blend gives
-# the shared edge pcurves a few 1e-6 of the size off (fw.blend_errors measures 1e-16 without
-# sewing): gaps are judged against this part of the blend's size.
+# The continuity check joins the blend and its faces in one shell; sharing a circle with the
+# B-spline blend puts the shared edge's pcurves a few 1e-6 of the size off (fw.blend_errors
+# measures 1e-16 on the surfaces themselves): gaps are judged against this part of the size.
 SEWN_GAP = 1e-5
 
 
@@ -55,27 +55,24 @@ def _number(value):
     return "0" if value == 0 else f"{value:.1e}" if abs(value) < 1e-3 else f"{value:.3g}"
 
 
-def report_lines(obj, report):
+def report_lines(report):
     """The report of the last good build in designers' words: each side's match and depth, the
     measured errors, the cross sections' certificates."""
     lines = []
     for k, (side, errors) in enumerate(zip(report.sides, report.errors or (None, None))):
-        face = getattr(obj, "FaceA" if k == 0 else "FaceB")
-        label = f"{face[0].Label}.{face[1][0]}" if face else "?"
-        kind = translate("FairSplines", "exact from the face's poles") if side["method"] == "exact" else side["method"]
-        lines.append(translate("FairSplines", "Side {} ({}): {}, depth \u00d7 {}").format(
-            SIDES[k], label, kind, f"{side['scale']:.2f}"))
+        kind = translate("FairSplines", "exact (face's poles)") if side["method"] == "exact" else side["method"]
+        lines.append(translate("FairSplines", "Side {}: {}").format(SIDES[k], kind))
         if errors is not None:
-            lines.append(translate("FairSplines", "  gap {} mm, angle {}\u00b0, curvature jump {} %").format(
+            lines.append(translate("FairSplines", "  gap {} mm, angle {}\u00b0, jump {} %").format(
                 _number(errors["gap_abs"]), _number(errors["angle"]), _number(100.0 * errors["curvature_jump"])))
     sections = report.sections
     monotone = sum(bool(s["monotone"]) for s in sections)
     most = max((s["curvature_extrema"] for s in sections), default=0)
-    lines.append(translate("FairSplines", "Cross sections: {} of {} with monotone curvature (certified)").format(
+    lines.append(translate("FairSplines", "Sections with monotone curvature (certified): {} of {}").format(
         monotone, len(sections)))
     if monotone < len(sections):
         worst = [i + 1 for i, s in enumerate(sections) if s["curvature_extrema"] == most]
-        lines.append(translate("FairSplines", "At most {} curvature extrema in a section (section {})").format(
+        lines.append(translate("FairSplines", "Most curvature extrema: {} (section {})").format(
             most, ", ".join(map(str, worst[:3]))))
     return lines
 
@@ -84,12 +81,10 @@ class _DepthRow:
     """One side's depth: "Fair (automatic)" (the property 0), or a slider of multiples of
     the default magnitude."""
 
-    def __init__(self, panel, prop, title):
+    def __init__(self, panel, rows, prop, title):
         from ..qt import QtCore, QtWidgets
 
         self.panel, self.prop = panel, prop
-        self.box = QtWidgets.QGroupBox(title)
-        layout = QtWidgets.QVBoxLayout(self.box)
         self.fair = QtWidgets.QCheckBox(translate("FairSplines", "Fair (automatic)"))
         self.fair.setToolTip(translate(
             "FairSplines", "The derivative magnitude alpha across the edge chosen for fair cross sections: "
@@ -104,11 +99,11 @@ class _DepthRow:
                            "derivative magnitude alpha, {} to {} times the default (mean chord over mean "
                            "cross-boundary speed)").format(SCALE_MIN, SCALE_MAX))
         self.value = QtWidgets.QLabel()
-        row = QtWidgets.QHBoxLayout()
-        row.addWidget(self.slider, 1)
-        row.addWidget(self.value)
-        layout.addWidget(self.fair)
-        layout.addLayout(row)
+        self.row = QtWidgets.QHBoxLayout()
+        self.row.addWidget(self.slider, 1)
+        self.row.addWidget(self.value)
+        rows.addRow(title, self.fair)
+        rows.addRow(self.row)
         self.fair.toggled.connect(self.set_fair)
         self.slider.valueChanged.connect(self.set_step)
 
@@ -176,10 +171,8 @@ class FaceBlendPanel(LiveEditPanel):
         self.end.valueChanged.connect(lambda v: self.apply([("End", v / 100.0)]))
         rows.addRow(translate("FairSplines", "From"), self.start)
         rows.addRow(translate("FairSplines", "To"), self.end)
-        self.depths = [_DepthRow(self, "ScaleA", translate("FairSplines", "Depth on side A")),
-                       _DepthRow(self, "ScaleB", translate("FairSplines", "Depth on side B"))]
-        for depth in self.depths:
-            layout.addWidget(depth.box)
+        self.depths = [_DepthRow(self, rows, "ScaleA", translate("FairSplines", "Depth A")),
+                       _DepthRow(self, rows, "ScaleB", translate("FairSplines", "Depth B"))]
         self.zebra = QtWidgets.QPushButton(translate("FairSplines", "Zebra on the faces"))
         self.zebra.setCheckable(True)
         self.zebra.setToolTip(translate("FairSplines", "Reflected stripes on the two faces too: across a G2 join "
@@ -188,17 +181,17 @@ class FaceBlendPanel(LiveEditPanel):
         self.zebra.toggled.connect(self.show_zebra)
         self.check = QtWidgets.QPushButton(translate("FairSplines", "Check continuity"))
         self.check.setCheckable(True)
-        self.check.setToolTip(translate("FairSplines", "The edges of the blend and its two faces, sewn, coloured "
-                                                       "by their measured continuity (gap, G0, G1, G2; "
+        self.check.setToolTip(translate("FairSplines", "The edges of the blend and its two faces, in one shell, "
+                                                       "coloured by their measured continuity (gap, G0, G1, G2; "
                                                        "fw.edge_continuity)"))
         self.check.toggled.connect(self.show_check)
-        layout.addLayout(button_column(self.zebra, self.check))
-        self.joins = wrapped_label()
-        layout.addWidget(self.joins)
         self.report = wrapped_label()
         layout.addWidget(self.report)
         self.status = wrapped_label()
         layout.addWidget(self.status)
+        layout.addLayout(button_column(self.zebra, self.check))
+        self.joins = wrapped_label()
+        layout.addWidget(self.joins)
         layout.addStretch(1)
         self.refresh()
 
@@ -221,9 +214,10 @@ class FaceBlendPanel(LiveEditPanel):
         for obj in self.zebra_objects:
             zebra_shape.hide(obj)
         self.zebra_objects = []
-        if on:
+        if on:  # the blend's own stripes, so that they run on across a G2 join
+            stripes = getattr(self.obj.ViewObject, "Stripes", None) if self.obj.ViewObject is not None else None
             for obj in dict.fromkeys(self.source_objects()):
-                zebra_shape.show(obj)
+                zebra_shape.show(obj, stripes=stripes, vertical=True)
                 self.zebra_objects.append(obj)
 
     def check_links(self):
@@ -270,7 +264,7 @@ class FaceBlendPanel(LiveEditPanel):
                 depth.show(getattr(obj, depth.prop), report.sides[k]["scale"] if report is not None else None)
         finally:
             self.updating = False
-        self.report.setText("\n".join(report_lines(obj, report)) if report is not None else "")
+        self.report.setText("\n".join(report_lines(report)) if report is not None else "")
         status = obj.Status
         show_status(self.status, "ok" if status.startswith("ok") else status)
         if status.startswith("ok") or report is None:
