@@ -320,3 +320,38 @@ def test_panel_fits_the_side_panel(scene, artifacts):
     panel.check.setChecked(True)
     assert_fits(panel, "Face blend panel")
     picture(panel, "face_blend", artifacts)
+
+
+def test_command_on_the_edges_of_two_b_spline_sheets_takes_their_only_faces(scene):
+    """A wavy floor and a wavy wall (one bicubic face each, different in every way from the
+    cylinders): two edges alone are enough; the blend is G2 along both, by OCCT's measure."""
+    import math
+
+    import Part
+
+    doc = scene[0]
+
+    def sheet(name, point):
+        poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
+        surface = Part.BSplineSurface()
+        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
+        obj = doc.addObject("Part::Feature", name)
+        obj.Shape = surface.toShape()
+        return obj
+
+    floor = sheet("Floor", lambda s, t: V(60 * s - 30, 40 * t - 40, 3 * math.sin(3 * s) * math.sin(2 * t)))
+    wall = sheet("Wall", lambda s, t: V(60 * s - 30, 20 + 3 * math.sin(4 * s) * t, 20 + 40 * t))
+    doc.recompute()
+    edge_f = next(f"Edge{i + 1}" for i, e in enumerate(floor.Shape.Edges) if abs(e.CenterOfMass.y) < 1e-6)
+    edge_w = next(f"Edge{i + 1}" for i, e in enumerate(wall.Shape.Edges) if abs(e.CenterOfMass.z - 20) < 1e-6)
+    select((floor, edge_f), (wall, edge_w))
+    before = {o.Name for o in doc.Objects}
+    run(NAME)
+    blend = next(o for o in doc.Objects if o.Name not in before)
+    links = [(link[0], list(link[1])) for link in (blend.FaceA, blend.EdgeA, blend.FaceB, blend.EdgeB)]
+    assert links == [(floor, ["Face1"]), (floor, [edge_f]), (wall, ["Face1"]), (wall, [edge_w])], links
+    assert blend.Status.startswith("ok: G2"), blend.Status
+    surface = blend.Shape.Faces[0].Surface
+    for face, edge, s in ((floor, edge_f, 0.0), (wall, edge_w, 1.0)):
+        e = fw.blend_errors(surface, face.Shape.Faces[0], face.Shape.getElement(edge), s)
+        assert e["gap"] < 1e-7 and e["angle"] < 1e-4 and e["curvature_jump"] < 1e-4, e
