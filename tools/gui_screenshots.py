@@ -6,6 +6,7 @@ section shows them. Run under a virtual display:
 
 --surface: only the surface analysis pictures (curvature map, continuity check, zebra).
 --torsion: only the fair blend in space with its curvature and torsion combs.
+--face-blend: only the blend of two faces with zebra and its panel (face_blend_panel.png).
 
 OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
 import math
@@ -299,6 +300,46 @@ def torsion_comb(out):
     settle()
 
 
+def face_blend(out):
+    """A G2 blend from the edge of a wavy floor to the bottom edge of a wavy wall (two bicubic
+    B-spline faces), with zebra on the blend and on both faces, the continuity check of the
+    joins on, and its panel open."""
+    import FreeCADGui
+    import Part
+
+    from freecad_workbench.features.face_blend import make_face_blend
+
+    V = FreeCAD.Vector
+
+    def sheet(name, point):
+        poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
+        surface = Part.BSplineSurface()
+        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
+        obj = doc.addObject("Part::Feature", name)
+        obj.Shape = surface.toShape()
+        return obj
+
+    doc = new_doc("FaceBlend")
+    floor = sheet("Floor", lambda s, t: V(60 * s - 30, 40 * t - 40, 3 * math.sin(3 * s) * math.sin(2 * t)))
+    wall = sheet("Wall", lambda s, t: V(60 * s - 30, 20 + 3 * math.sin(4 * s) * t, 20 + 40 * t))
+    doc.recompute()
+
+    def edge_where(obj, test):
+        return next(f"Edge{i + 1}" for i, e in enumerate(obj.Shape.Edges) if test(e.CenterOfMass))
+
+    blend = make_face_blend(doc, (floor, "Face1"), (floor, edge_where(floor, lambda c: abs(c.y) < 1e-6)),
+                            (wall, "Face1"), (wall, edge_where(wall, lambda c: abs(c.z - 20) < 1e-6)))
+    FreeCADGui.Selection.clearSelection()
+    panel = edit(blend)
+    panel.zebra.setChecked(True)
+    panel.check.setChecked(True)
+    settle()
+    print(blend.Status)
+    grab(out, "face_blend_panel", "viewIsometric")
+    panel.reject()
+    settle()
+
+
 if __name__ == "__main__":
     ARGS = [a for a in sys.argv[1:] if not a.startswith("--")]
     OUT = ARGS[0] if ARGS else os.path.join(REPO, "docs", "gui")
@@ -310,6 +351,10 @@ if __name__ == "__main__":
         os.makedirs(OUT, exist_ok=True)
         start_gui()
         torsion_comb(OUT)
+    elif "--face-blend" in sys.argv:  # only the face blend picture
+        os.makedirs(OUT, exist_ok=True)
+        start_gui()
+        face_blend(OUT)
     else:
         main(OUT)
     sys.stdout.flush()

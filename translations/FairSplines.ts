@@ -9,6 +9,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>  gap {} mm, angle {}°, jump {} %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>(a ring)</source>
         <translation type="unfinished"></translation>
@@ -155,6 +160,12 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Blend faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/curvature_map.py"/>
         <source>Blue from here down</source>
         <translation type="unfinished"></translation>
@@ -191,6 +202,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/continuity.py"/>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
         <source>Check continuity</source>
         <translation type="unfinished"></translation>
     </message>
@@ -242,6 +254,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Curvature (C2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Curvature (G2)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -311,6 +328,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Depth A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Depth B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/preferences.py"/>
         <source>Design spline join tolerance</source>
         <translation type="unfinished"></translation>
@@ -349,6 +376,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/edit_polygon.py"/>
         <source>Edit control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Edit face blend</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -397,6 +429,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Exact: the blend&apos;s boundary rows from the face&apos;s homogeneous poles. Gap, angle and curvature jump (across the edge and at 45°, in % of the curvature scale): measured by OCCT at 101 points of each edge (fw.blend_errors). Monotone: the exact certificate of monotone curvature of each cross section (rational Bezier)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/continuity.py"/>
         <source>Faces</source>
         <translation type="unfinished"></translation>
@@ -409,6 +446,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/form.py"/>
         <source>Failed: {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Fair (automatic)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -427,6 +469,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Flip direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <source>Focal distance</source>
         <translation type="unfinished"></translation>
@@ -434,6 +481,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Free-form side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>From</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -454,6 +506,11 @@
     <message>
         <location filename="../freecad_workbench/gui/continuity.py"/>
         <source>G2: curvature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>G2: the blend meets both faces in position, tangent plane and normal curvature in every direction (exact boundary rows from the faces&apos; homogeneous poles); G1: position and tangent plane only. One choice for both sides: the blend surface&apos;s degree across (quintic for G2, cubic for G1) is shared by its two boundaries</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -495,6 +552,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
         <source>Horizontal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>How far the blend runs along this face before turning: the cross-boundary derivative magnitude alpha, {} to {} times the default (mean chord over mean cross-boundary speed)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -550,6 +612,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Joined to {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Joins: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -640,6 +707,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Meets in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/curvature_map.py"/>
         <source>Minimum curvature</source>
         <translation type="unfinished"></translation>
@@ -664,6 +736,11 @@
         <location filename="../freecad_workbench/gui/commands/common.py"/>
         <source>More in FairSplines&apos; documentation, section “{}”:
 {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Most curvature extrema: {} (section {})</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -708,8 +785,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>Open a document first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Or join to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Pair the start of the first edge with the end of the second (for a twisted blend, try this)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -829,6 +916,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Reflected stripes on the two faces too: across a G2 join they run on smoothly, across G1 they bend, across G0 they break</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/monotone_design.py"/>
         <source>Remove last</source>
         <translation type="unfinished"></translation>
@@ -910,8 +1002,18 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Sections with monotone curvature (certified): {} of {}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>Select a sketch, a Design spline or edges first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>Select two edges, each on the face to blend from (Ctrl+click)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -928,6 +1030,11 @@
     <message>
         <location filename="../freecad_workbench/gui/comb.py"/>
         <source>Show the curvature comb of this object&apos;s edges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Side {}: {}</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1007,6 +1114,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Tangent (G1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/comb.py"/>
         <source>Teeth</source>
         <translation type="unfinished"></translation>
@@ -1037,6 +1149,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>The derivative magnitude alpha across the edge chosen for fair cross sections: fewest curvature extrema, then least scale-free curvature variation L³∫(dκ/ds)²ds, by a grid and pattern search over the 13 sections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>The edges of the blend and its two faces, in one shell, coloured by their measured continuity (gap, G0, G1, G2; fw.edge_continuity)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/continuity.py"/>
         <source>The faces that meet at the edge</source>
         <translation type="unfinished"></translation>
@@ -1064,6 +1186,11 @@
     <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>This part of the curve is the csr-spline of the samples (curvature-sensitive spline, Section 4 of the paper): close to every sample, without added curvature wiggles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>To</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1154,6 +1281,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Where the blend ends along each edge, in % of its length in parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Where the blend starts along each edge, in % of its length in parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/basic_curve.py"/>
         <source>Where the curve&apos;s own origin lies (its Placement)</source>
         <translation type="unfinished"></translation>
@@ -1180,6 +1317,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>Zebra on the faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/zebra_shape.py"/>
         <source>Zebra stripes</source>
         <translation type="unfinished"></translation>
@@ -1200,6 +1342,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>exact (face&apos;s poles)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../fairsplines_setup/dialog.py"/>
         <source>found: {name}</source>
         <translation type="unfinished"></translation>
@@ -1217,6 +1364,11 @@
     <message>
         <location filename="../fairsplines_setup/dialog.py"/>
         <source>missing: {name}, package {package}</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>none found</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1245,8 +1397,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>{} of {} bounds no face</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>{} of {} bounds {}: select the face to blend from too (Ctrl+click)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/mark_points.py"/>
         <source>{} samples, no marks: the curve follows them closely here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>{}: {}, {} of {}</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1306,6 +1473,23 @@ Set it up in the panel; zebra stripes show the seams.</source>
     </message>
 </context>
 <context>
+    <name>FairSplines_BlendFaces</name>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>A smooth surface from an edge of one face to an edge of another: it meets both faces
+in curvature (G2) or in tangent (G1), exactly where the edge is a boundary of its face.
+Its cross sections are chosen for fair, monotone curvature (certified).
+Select two edges in the 3D view, with the face of each where an edge bounds two.
+Exact boundary derivatives from the face&apos;s poles; shows with zebra stripes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/commands/face_blend.py"/>
+        <source>Blend faces</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>FairSplines_BlendGroup</name>
     <message>
         <location filename="../freecad_workbench/gui/commands/__init__.py"/>
@@ -1314,7 +1498,7 @@ Set it up in the panel; zebra stripes show the seams.</source>
     </message>
     <message>
         <location filename="../freecad_workbench/gui/commands/__init__.py"/>
-        <source>Fair blend between two curves, monotone design, blend basic shape</source>
+        <source>Fair blend between two curves, monotone design, blend basic shape, blend faces</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

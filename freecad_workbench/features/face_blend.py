@@ -1,5 +1,6 @@
 """The face blend: a parametric fw.blend_faces between an edge of one face and an edge of
-another (issue 29; docs/FACE_BLENDS.md). Headless; the GUI command and panel come later.
+another (issue 29; docs/FACE_BLENDS.md). Headless; the GUI's command (FairSplines_BlendFaces), task
+panel and zebra view provider attach when FreeCAD.GuiUp.
 
     from freecad_workbench.features.face_blend import make_face_blend
     blend = make_face_blend(doc, (box, "Face6"), (box, "Edge3"), (other, "Face1"), (other, "Edge1"))
@@ -11,7 +12,7 @@ good shape and puts the message in Status.
 """
 from ..errors import InputError
 from ..face_blend import blend_faces
-from .base import FeatureProxy, set_if_changed
+from .base import FeatureProxy, attach_view_provider, set_if_changed
 from .undo import undo_step
 
 # (type, name, tooltip, default, editor mode); defaults are set only when a property is new.
@@ -65,6 +66,7 @@ class FaceBlend(FeatureProxy):
                                       flip=bool(obj.Flip), start=obj.Start, end=obj.End,
                                       scale_a=obj.ScaleA if obj.ScaleA > 0 else None,
                                       scale_b=obj.ScaleB if obj.ScaleB > 0 else None)
+        self.report = report  # the last good build's report, for the task panel (not saved)
         monotone = sum(s["monotone"] for s in report.sections)
         errors = report.errors
         self._status = (f"ok: {obj.Continuity}, {report.sides[0]['method']} / {report.sides[1]['method']}, "
@@ -80,10 +82,11 @@ class FaceBlend(FeatureProxy):
 
 
 def make_face_blend(doc, face_a, edge_a, face_b, edge_b, continuity="G2", flip=False, start=0.0, end=1.0,
-                    name="FaceBlend"):
+                    name="FaceBlend", scale_a=0.0, scale_b=0.0):
     """Create a face blend in `doc` and recompute, as one undoable step. Each of face_a, edge_a,
-    face_b, edge_b is ``(obj, "Face1")`` / ``(obj, "Edge3")``. Returns the new object; if the
-    sources are bad it exists with the message in its Status."""
+    face_b, edge_b is ``(obj, "Face1")`` / ``(obj, "Edge3")``; scale_a, scale_b: 0 for fair
+    (chosen), else multiples of the default magnitude. Returns the new object; if the sources are
+    bad it exists with the message in its Status."""
     with undo_step(doc, "Create face blend"):
         obj = doc.addObject("Part::FeaturePython", name)
         FaceBlend(obj)
@@ -91,5 +94,7 @@ def make_face_blend(doc, face_a, edge_a, face_b, edge_b, continuity="G2", flip=F
         obj.Continuity = continuity
         obj.Flip = bool(flip)
         obj.Start, obj.End = float(start), float(end)
+        obj.ScaleA, obj.ScaleB = float(scale_a), float(scale_b)
+        attach_view_provider(obj, "ViewProviderFaceBlend")
         doc.recompute()
     return obj

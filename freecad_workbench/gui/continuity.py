@@ -52,10 +52,17 @@ def _element(sub):
 
 def checked_shape(links):
     """(shape in global coordinates, object, {record edge name: object's edge name}) of
-    selection-style links: one whole object, or faces of one object."""
+    selection-style links: one whole object, or faces of one object. Faces of several objects
+    (a blend and the faces it joins) make one shell (Part.Shell shares their coincident edges),
+    so that the edges where they meet are judged; object is None then (the shell's edges are
+    nobody's)."""
     import Part
 
     obj = links[0][0]
+    if any(o is not obj for o, _ in links):
+        faces = [Part.getShape(o).getElement(_element(sub)) if _element(sub) else Part.getShape(o)
+                 for o, sub in links]
+        return Part.Shell([f for shape in faces for f in shape.Faces]), None, {}
     whole = Part.getShape(obj)
     faces = sorted({_element(sub) for o, sub in links if o is obj and _element(sub).startswith("Face")})
     if not faces or any(not _element(sub) for o, sub in links if o is obj):
@@ -97,6 +104,8 @@ class Check:
             self.node.set_mark(None)
             return
         self.node.set_mark(worst_point(self.records[i]))
+        if self.obj is None:
+            return  # a sewn shell of several objects' faces: its edges are nobody's to select
         FreeCADGui.Selection.clearSelection()
         FreeCADGui.Selection.addSelection(self.obj, self.object_edge(i))
 
@@ -226,7 +235,8 @@ def current():
 
 def show(links, gap_tolerance=None, angle_tolerance=None, curvature_tolerance=None):
     """Check the edges of selection-style links [(obj, sub)] (one object: the whole or some
-    of its faces) and draw them; replaces the check shown before. Returns the Check."""
+    of its faces; or faces of several objects, one shell) and draw them; replaces the check shown
+    before. Returns the Check."""
     import freecad_workbench as fw
 
     from .overlay import active_view

@@ -279,7 +279,16 @@ class ViewProviderProfileTest(ViewProvider):
             self.update_zebra()
 
 
-class ViewProviderBlendShape(ViewProviderProfileTest):
+class ZebraFacesViewProvider(ViewProviderProfileTest):
+    """Every face of the object's shape meshed in the 'Zebra' display mode (the default)."""
+
+    def mesh_zebra(self, obj):
+        from .zebra import update_zebra_faces
+
+        update_zebra_faces(self.zebra, [] if obj.Shape.isNull() else local_shape(obj).Faces)
+
+
+class ViewProviderBlendShape(ZebraFacesViewProvider):
     """The blended shell in the 'Zebra' display mode (the default; gui/zebra.py), every patch
     meshed, so that the stripes show how the basic shape, the transition and the ring join.
     Double-click opens the task panel."""
@@ -287,7 +296,32 @@ class ViewProviderBlendShape(ViewProviderProfileTest):
     ICON = "FairSplines_BlendBasicShape"
     PANEL = ".panels.blend_shape:BlendShapePanel"
 
+
+class ViewProviderFaceBlend(ZebraFacesViewProvider):
+    """The blend of two faces in the 'Zebra' display mode (the default): its stripes run on
+    into the faces' own where the faces show zebra too (the panel's Zebra button). Double-click
+    opens the task panel."""
+
+    ICON = "FairSplines_BlendFaces"
+    PANEL = ".panels.face_blend:FaceBlendPanel"
+
     def mesh_zebra(self, obj):
+        """The blend's normals turned to agree with its first face's along their edge: the
+        stripes (mapped from the normals) then run on into that face's zebra."""
+        import Part
+
         from .zebra import update_zebra_faces
 
-        update_zebra_faces(self.zebra, [] if obj.Shape.isNull() else local_shape(obj).Faces)
+        faces = [] if obj.Shape.isNull() else local_shape(obj).Faces
+        link = getattr(obj, "FaceA", None)
+        if faces and link:
+            try:
+                face = Part.getShape(link[0]).getElement(link[1][0])
+                blend = obj.Shape.Faces[0]
+                u0, u1, v0, _ = blend.ParameterRange
+                point = blend.valueAt(0.5 * (u0 + u1), v0)
+                if face.normalAt(*face.Surface.parameter(point)).dot(blend.normalAt(0.5 * (u0 + u1), v0)) < 0:
+                    faces = [f.reversed() for f in faces]
+            except Exception:  # a source gone or failing: as the blend is oriented
+                pass
+        update_zebra_faces(self.zebra, faces)

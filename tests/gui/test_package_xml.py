@@ -26,6 +26,7 @@ CAPABILITIES = {
         "FairSplines_CheckMonotone"],
     "Surface analysis: curvature map, continuity check across edges, zebra stripes, iso-curve combs": [
         "FairSplines_CurvatureMap", "FairSplines_CheckContinuity", "FairSplines_Zebra", "FairSplines_IsoCombs"],
+    "Face blends: a G1 or G2 surface joining two faces along two edges": ["FairSplines_BlendFaces"],
     "the workbench builds it on first use": ["FairSplines_BuildKernel"],
 }
 

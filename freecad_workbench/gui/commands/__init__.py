@@ -4,6 +4,7 @@
     design.py      basic curves, Design spline, Mark points, Edit control points, Profile test
     fair_blend.py  Fair blend, Monotone design
     blend.py       Blend basic shape
+    face_blend.py  Blend faces
     analysis.py    Curvature comb, Curvature plot, Check curvature monotonicity
     common.py      what they share: the selection, macro lines, resources
 
@@ -11,7 +12,7 @@ Importing these modules registers nothing; InitGui.Initialize calls register() a
 out TOOLBAR and MENU. Drop-down groups keep the toolbar short: each shows the command last
 used.
 """
-from . import analysis, blend, csr, design, fair_blend
+from . import analysis, blend, csr, design, face_blend, fair_blend
 from .common import QT_TRANSLATE_NOOP, resources
 
 BLEND_GROUP = "FairSplines_BlendGroup"
@@ -31,7 +32,7 @@ MENU = (
     (None, [csr.NAME, csr.FAIR_NAME]),
     (QT_TRANSLATE_NOOP("Workbench", "Basic curve"), list(design.KIND_COMMANDS.values())),
     (None, ["FairSplines_DesignSpline", "FairSplines_MarkPoints", "FairSplines_EditPolygon", "Separator",
-            fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME, "Separator",
+            fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME, face_blend.NAME, "Separator",
             *analysis.COMMANDS, "FairSplines_ProfileTest"]),
 )
 
@@ -63,9 +64,10 @@ def _groups():
         QT_TRANSLATE_NOOP(FIT_GROUP, "Spline through points (csr fit), fair fit within a tolerance"),
         "Using it in the FreeCAD GUI", csr.NAME)
     blends = CommandGroup(
-        BLEND_GROUP, (fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME),
+        BLEND_GROUP, (fair_blend.NAME, fair_blend.DESIGN_NAME, blend.NAME, face_blend.NAME),
         QT_TRANSLATE_NOOP(BLEND_GROUP, "Blends"),
-        QT_TRANSLATE_NOOP(BLEND_GROUP, "Fair blend between two curves, monotone design, blend basic shape"),
+        QT_TRANSLATE_NOOP(BLEND_GROUP, "Fair blend between two curves, monotone design, blend basic shape, "
+                                       "blend faces"),
         "Fair blends (G1 and G2)", fair_blend.NAME)
     return {FIT_GROUP: fit, BLEND_GROUP: blends}
 
@@ -73,7 +75,7 @@ def _groups():
 def command_objects():
     """{name: command} of every FairSplines command."""
     commands = {}
-    for module in (csr, design, fair_blend, blend, analysis):
+    for module in (csr, design, fair_blend, blend, face_blend, analysis):
         commands.update(module.command_objects())
     commands.update(_groups())
     return commands
