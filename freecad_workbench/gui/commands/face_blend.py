@@ -78,7 +78,7 @@ class BlendFacesCommand:
                 "Select two edges in the 3D view, with the face of each where an edge bounds two.\n"
                 "Exact boundary derivatives from the face's poles; shows with zebra stripes.",
             ),
-            "Face blends (G1 and G2, issue 29)",
+            "Face blends: G1 and G2 along the whole edge, fair across (issue 29)",
         )
 
     def IsActive(self):
