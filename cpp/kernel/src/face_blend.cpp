@@ -116,7 +116,10 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   Side side;
   Handle(Geom_Surface) basis = base;
   const Handle(Geom_RectangularTrimmedSurface) trimmedBase = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis);
-  if (!trimmedBase.IsNull()) basis = trimmedBase->BasisSurface();
+  // Trim the basis itself below, not the face's trimmed surface: OCCT 7.9 gives the face's
+  // bounds normalised into the basis' period (a torus zone v in [-pi/2, pi/2] reads
+  // [3 pi/2, 5 pi/2]), outside a trimmed surface's own range.
+  if (!trimmedBase.IsNull()) basis = trimmedBase->BasisSurface(), base = basis;
   side.report.surfaceType = surfaceName(basis);
   if (!exactlyConverted(side.report.surfaceType))
     throw InputError(faceName + " is a " + side.report.surfaceType +
