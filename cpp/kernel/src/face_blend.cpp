@@ -116,9 +116,8 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   Side side;
   Handle(Geom_Surface) basis = base;
   const Handle(Geom_RectangularTrimmedSurface) trimmedBase = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis);
-  // Trim the basis itself below, not the face's trimmed surface: OCCT 7.9 gives the face's
-  // bounds normalised into the basis' period (a torus zone v in [-pi/2, pi/2] reads
-  // [3 pi/2, 5 pi/2]), outside a trimmed surface's own range.
+  // Trim the basis itself below, not the face's trimmed surface: OCCT 7.8+ gives the face's
+  // bounds normalised into the basis' period, which can lie outside a trimmed surface's range.
   if (!trimmedBase.IsNull()) basis = trimmedBase->BasisSurface(), base = basis;
   side.report.surfaceType = surfaceName(basis);
   if (!exactlyConverted(side.report.surfaceType))
@@ -191,13 +190,28 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   Handle(Geom_Surface) trimmed;
   const double a0 = std::min(from, to), a1 = std::max(from, to);
   const double b0 = std::min(v0, vOther), b1 = std::max(v0, vOther);
-  try {
-    trimmed = alongU ? new Geom_RectangularTrimmedSurface(base, a0, a1, b0, b1)
-                     : new Geom_RectangularTrimmedSurface(base, b0, b1, a0, a1);
-    side.surface = GeomConvert::SurfaceToBSplineSurface(trimmed);
-  } catch (const Standard_Failure& e) {
-    throw InputError(faceName + " could not be converted to a B-spline: " + e.GetMessageString());
+  // A periodic direction may be trimmed one period lower or higher: only the order of v0 and
+  // vOther and of from and to is used below. OCCT 7.8+ refuses a torus trimmed across its
+  // period's end (its face bounds come normalised, v in [3 pi/2, 5 pi/2] for [-pi/2, pi/2]),
+  // so the shifted ranges are tried in turn.
+  const double periodA =
+      alongU ? (base->IsUPeriodic() ? base->UPeriod() : 0.0) : (base->IsVPeriodic() ? base->VPeriod() : 0.0);
+  const double periodB =
+      alongU ? (base->IsVPeriodic() ? base->VPeriod() : 0.0) : (base->IsUPeriodic() ? base->UPeriod() : 0.0);
+  std::string failure;
+  for (const auto& [ka, kb] : {std::pair{0, 0}, {0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, 1}}) {
+    if ((ka != 0 && periodA == 0.0) || (kb != 0 && periodB == 0.0)) continue;
+    const double sa = ka * periodA, sb = kb * periodB;
+    try {
+      trimmed = alongU ? new Geom_RectangularTrimmedSurface(base, a0 + sa, a1 + sa, b0 + sb, b1 + sb)
+                       : new Geom_RectangularTrimmedSurface(base, b0 + sb, b1 + sb, a0 + sa, a1 + sa);
+      side.surface = GeomConvert::SurfaceToBSplineSurface(trimmed);
+      break;
+    } catch (const Standard_Failure& e) {
+      if (failure.empty()) failure = e.GetMessageString();
+    }
   }
+  if (side.surface.IsNull()) throw InputError(faceName + " could not be converted to a B-spline: " + failure);
   Handle(Geom_BSplineSurface)& s = side.surface;
   if (s->IsUPeriodic()) s->SetUNotPeriodic();
   if (s->IsVPeriodic()) s->SetVNotPeriodic();
