@@ -188,16 +188,22 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
 
   // The face's side of the edge as an exact B-spline.
   Handle(Geom_Surface) trimmed;
-  const double a0 = std::min(from, to), a1 = std::max(from, to);
+  double a0 = std::min(from, to), a1 = std::max(from, to);
   const double b0 = std::min(v0, vOther), b1 = std::max(v0, vOther);
   // A periodic direction may be trimmed one period lower or higher: only the order of v0 and
-  // vOther and of from and to is used below. OCCT 7.8+ refuses a torus trimmed across its
-  // period's end (its face bounds come normalised, v in [3 pi/2, 5 pi/2] for [-pi/2, pi/2]),
-  // so the shifted ranges are tried in turn.
+  // vOther and of from and to is used below. OCCT 7.8+ gives a face's bounds normalised into
+  // the period (a torus zone's v in [3 pi/2, 5 pi/2] for [-pi/2, pi/2]) and its conversions
+  // refuse some such ranges, so the shifted ranges are tried in turn.
   const double periodA =
       alongU ? (base->IsUPeriodic() ? base->UPeriod() : 0.0) : (base->IsVPeriodic() ? base->VPeriod() : 0.0);
   const double periodB =
       alongU ? (base->IsVPeriodic() ? base->VPeriod() : 0.0) : (base->IsUPeriodic() ? base->UPeriod() : 0.0);
+  // A closed rim read from its pcurve may span the period plus a rounding error (2 pi + 4e-15
+  // on OCCT 7.9), which OCCT's conversions refuse: at most one period.
+  if (periodA > 0.0 && a1 - a0 > periodA && a1 - a0 <= periodA * (1.0 + 1e-12)) {
+    a1 = a0 + periodA;
+    while (a1 - a0 > periodA) a1 = std::nextafter(a1, a0);
+  }
   std::string failure;
   for (const auto& [ka, kb] : {std::pair{0, 0}, {0, -1}, {0, 1}, {-1, 0}, {1, 0}, {-1, -1}, {1, 1}}) {
     if ((ka != 0 && periodA == 0.0) || (kb != 0 && periodB == 0.0)) continue;
