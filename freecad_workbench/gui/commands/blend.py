@@ -8,7 +8,7 @@ FairSplines_BlendBasicShape   a sphere zone, cylinder, cone or torus joined C2 (
 import FreeCAD
 import FreeCADGui
 
-from .common import QT_TRANSLATE_NOOP, doc_code, edit_later, new_object, resources
+from .common import QT_TRANSLATE_NOOP, create, edit_later, resources
 
 NAME = "FairSplines_BlendBasicShape"
 
@@ -31,12 +31,7 @@ class BlendBasicShapeCommand:
         return FreeCAD.ActiveDocument is not None and not FreeCADGui.Control.activeDialog()
 
     def Activated(self):
-        doc = FreeCAD.ActiveDocument
-        before = {o.Name for o in doc.Objects}
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.blend_shape import make_blend_shape")
-        FreeCADGui.doCommand(f"make_blend_shape({doc_code(doc)}, 'Sphere zone')")
-        obj = new_object(doc, before)
+        obj = create(FreeCAD.ActiveDocument, "blend_shape", "make_blend_shape", "'Sphere zone'")
         if obj is not None:
             edit_later(obj)
 

@@ -110,6 +110,16 @@ def doc_code(doc):
     return f"FreeCAD.getDocument({doc.Name!r})"
 
 
+def create(doc, module, maker, args=""):
+    """Make an object with freecad_workbench.features.<module>.<maker>(doc, args) through the
+    macro recorder (the lines a macro replays) and return it, or None if nothing was made."""
+    before = {o.Name for o in doc.Objects}
+    FreeCADGui.doCommand("import FreeCAD")
+    FreeCADGui.doCommand(f"from freecad_workbench.features.{module} import {maker}")
+    FreeCADGui.doCommand(f"{maker}({', '.join([doc_code(doc)] + ([args] if args else []))})")
+    return new_object(doc, before)
+
+
 def new_object(doc, before):
     """The object a command added to doc (names `before` were there already), or None."""
     created = [o for o in doc.Objects if o.Name not in before]

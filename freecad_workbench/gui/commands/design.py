@@ -18,7 +18,7 @@ from ...features.design_spline import is_samples_source
 from ...features.design_spline import is_design_spline
 from ...features.edit_polygon import is_edit_polygon
 from .. import command_name
-from .common import QT_TRANSLATE_NOOP, doc_code, edit_later, link_code, new_object, one_edge, resources, selected_links
+from .common import QT_TRANSLATE_NOOP, create, edit_later, link_code, one_edge, resources, selected_links
 
 KIND_COMMANDS = {kind: command_name(kind) for kind in KINDS}
 GROUP = "FairSplines_BasicCurves"
@@ -77,12 +77,7 @@ class BasicCurveCommand:
         return FreeCAD.ActiveDocument is not None
 
     def Activated(self):
-        doc = FreeCAD.ActiveDocument
-        before = {o.Name for o in doc.Objects}
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.basic_curve import make_basic_curve")
-        FreeCADGui.doCommand(f"make_basic_curve({doc_code(doc)}, {self.kind!r})")
-        obj = new_object(doc, before)
+        obj = create(FreeCAD.ActiveDocument, "basic_curve", "make_basic_curve", repr(self.kind))
         if obj is not None:
             edit_later(obj)
 
@@ -133,14 +128,9 @@ class DesignSplineCommand:
         links = selected_links()
         if not links:
             return
-        doc = links[0][0].Document
         pieces = "[" + ", ".join(f"({link_code(o, s)}, None)" for o, s in links) + "]"
-        before = {o.Name for o in doc.Objects}
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.design_spline import make_design_spline")
-        FreeCADGui.doCommand(f"make_design_spline({doc_code(doc)}, {pieces})")
+        obj = create(links[0][0].Document, "design_spline", "make_design_spline", pieces)
         FreeCADGui.Selection.clearSelection()
-        obj = new_object(doc, before)
         if obj is not None:
             edit_later(obj)
 
@@ -216,13 +206,8 @@ class EditPolygonCommand:
         if is_edit_polygon(obj):
             edit_later(obj)
             return
-        doc = obj.Document
         source = link_code(obj)
-        before = {o.Name for o in doc.Objects}
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.edit_polygon import make_edit_polygon")
-        FreeCADGui.doCommand(f"make_edit_polygon({doc_code(doc)}, {link_code(obj, sub)})")
-        created = new_object(doc, before)
+        created = create(obj.Document, "edit_polygon", "make_edit_polygon", link_code(obj, sub))
         if created is not None:
             FreeCADGui.doCommand(f"{source}.ViewObject.Visibility = False")
             edit_later(created)
@@ -252,10 +237,7 @@ class ProfileTestCommand:
         if link is None:
             return
         obj, sub = link
-        doc = obj.Document
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.profile_test import make_profile_test")
-        FreeCADGui.doCommand(f"make_profile_test({doc_code(doc)}, {link_code(obj, sub)})")
+        create(obj.Document, "profile_test", "make_profile_test", link_code(obj, sub))
         FreeCADGui.Selection.clearSelection()
 
 

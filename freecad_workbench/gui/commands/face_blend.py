@@ -8,7 +8,7 @@ import FreeCAD
 import FreeCADGui
 import Part
 
-from .common import QT_TRANSLATE_NOOP, doc_code, edit_later, element, link_code, new_object, resources
+from .common import QT_TRANSLATE_NOOP, create, edit_later, element, link_code, resources
 
 translate = FreeCAD.Qt.translate
 
@@ -90,14 +90,9 @@ class BlendFacesCommand:
             _say(sides)
             return
         (face_a, edge_a), (face_b, edge_b) = sides
-        doc = face_a[0].Document
-        before = {o.Name for o in doc.Objects}
-        args = ", ".join([doc_code(doc)] + [link_code(*link) for link in (face_a, edge_a, face_b, edge_b)])
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.face_blend import make_face_blend")
-        FreeCADGui.doCommand(f"make_face_blend({args})")
+        args = ", ".join(link_code(*link) for link in (face_a, edge_a, face_b, edge_b))
+        obj = create(face_a[0].Document, "face_blend", "make_face_blend", args)
         FreeCADGui.Selection.clearSelection()
-        obj = new_object(doc, before)
         if obj is not None:
             edit_later(obj)
 

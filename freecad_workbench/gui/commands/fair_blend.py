@@ -11,7 +11,7 @@ import Part
 from ...errors import InputError
 from ...features.fair_blend import element_shape, end_tangent
 from ...features.monotone_design import MonotoneDesign
-from .common import QT_TRANSLATE_NOOP, doc_code, link_code, resources, selected_links
+from .common import QT_TRANSLATE_NOOP, create, doc_code, link_code, resources, selected_links
 
 NAME = "FairSplines_MonotoneBlend"  # Fair blend: the command kept its name, so toolbars people made keep it
 DESIGN_NAME = "FairSplines_MonotoneDesign"
@@ -98,8 +98,7 @@ class FairBlendCommand:
         if not sides:
             return
         (o0, s0, shape0, end0), (o1, s1, shape1, end1) = sides
-        doc = o0.Document
-        args = [doc_code(doc)]
+        args = []
         for obj, sub in ((o0, s0), (o1, s1)):
             args.append(link_code(obj, sub or None))
         if end0:
@@ -112,9 +111,7 @@ class FairBlendCommand:
         else:
             other = shape0.Point if end0 is None else shape0.valueAt(shape0.LastParameter)
             args.append(f"end_direction={_vector_code(_vertex_direction(o1, shape1, other, False))}")
-        FreeCADGui.doCommand("import FreeCAD")
-        FreeCADGui.doCommand("from freecad_workbench.features.fair_blend import make_fair_blend")
-        FreeCADGui.doCommand(f"make_fair_blend({', '.join(args)})")
+        create(o0.Document, "fair_blend", "make_fair_blend", ", ".join(args))
         FreeCADGui.Selection.clearSelection()
 
 
