@@ -30,6 +30,33 @@ def line_into_arc(doc):
     return lead, arc
 
 
+def rim_edge(obj, z):
+    """The name ('EdgeN') of obj's circular edge at height z (a cylinder's rim)."""
+    for i, e in enumerate(obj.Shape.Edges):
+        if e.Curve.__class__.__name__ == "Circle" and abs(e.CenterOfMass.z - z) < 1e-9:
+            return f"Edge{i + 1}"
+    raise AssertionError(f"{obj.Name} has no circular edge at z = {z}")
+
+
+def wavy_floor_and_wall(doc):
+    """A wavy floor and a wavy wall, one bicubic face each (two knot spans each way), 40 mm
+    apart: (floor, the floor's edge facing the wall, wall, the wall's bottom edge)."""
+    def sheet(name, point):
+        poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
+        surface = Part.BSplineSurface()
+        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
+        obj = doc.addObject("Part::Feature", name)
+        obj.Shape = surface.toShape()
+        return obj
+
+    floor = sheet("Floor", lambda s, t: V(60 * s - 30, 40 * t - 40, 3 * math.sin(3 * s) * math.sin(2 * t)))
+    wall = sheet("Wall", lambda s, t: V(60 * s - 30, 20 + 3 * math.sin(4 * s) * t, 20 + 40 * t))
+    doc.recompute()
+    edge_f = next(f"Edge{i + 1}" for i, e in enumerate(floor.Shape.Edges) if abs(e.CenterOfMass.y) < 1e-6)
+    edge_w = next(f"Edge{i + 1}" for i, e in enumerate(wall.Shape.Edges) if abs(e.CenterOfMass.z - 20) < 1e-6)
+    return floor, edge_f, wall, edge_w
+
+
 def assert_failed_like_freecad(obj, message):
     """A feature that could not be built fails as FreeCAD's own do: invalid (the error mark
     in the tree), FreeCAD's status string and the Status property name the reason. (That

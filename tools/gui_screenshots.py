@@ -305,30 +305,13 @@ def face_blend(out):
     B-spline faces), with zebra on the blend and on both faces, the continuity check of the
     joins on, and its panel open."""
     import FreeCADGui
-    import Part
 
     from freecad_workbench.features.face_blend import make_face_blend
-
-    V = FreeCAD.Vector
-
-    def sheet(name, point):
-        poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
-        surface = Part.BSplineSurface()
-        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
-        obj = doc.addObject("Part::Feature", name)
-        obj.Shape = surface.toShape()
-        return obj
+    from tests.scenes import wavy_floor_and_wall
 
     doc = new_doc("FaceBlend")
-    floor = sheet("Floor", lambda s, t: V(60 * s - 30, 40 * t - 40, 3 * math.sin(3 * s) * math.sin(2 * t)))
-    wall = sheet("Wall", lambda s, t: V(60 * s - 30, 20 + 3 * math.sin(4 * s) * t, 20 + 40 * t))
-    doc.recompute()
-
-    def edge_where(obj, test):
-        return next(f"Edge{i + 1}" for i, e in enumerate(obj.Shape.Edges) if test(e.CenterOfMass))
-
-    blend = make_face_blend(doc, (floor, "Face1"), (floor, edge_where(floor, lambda c: abs(c.y) < 1e-6)),
-                            (wall, "Face1"), (wall, edge_where(wall, lambda c: abs(c.z - 20) < 1e-6)))
+    floor, edge_f, wall, edge_w = wavy_floor_and_wall(doc)
+    blend = make_face_blend(doc, (floor, "Face1"), (floor, edge_f), (wall, "Face1"), (wall, edge_w))
     FreeCADGui.Selection.clearSelection()
     panel = edit(blend)
     panel.zebra.setChecked(True)

@@ -13,6 +13,7 @@ import FreeCAD
 import freecad_workbench as fw
 
 from test_blend_gui import gui, panel_of, run  # tests/gui is on the path
+from tests.scenes import rim_edge, wavy_floor_and_wall
 from test_blend_gui import scene as blend_scene  # noqa: F401  (a fixture, used by name)
 
 NAME = "FairSplines_BlendFaces"
@@ -37,13 +38,6 @@ def scene(blend_scene):  # noqa: F811  (the fixture imported above, by name)
     zebra_shape.hide()
 
 
-def rim(obj, z):
-    for i, e in enumerate(obj.Shape.Edges):
-        if e.Curve.__class__.__name__ == "Circle" and abs(e.CenterOfMass.z - z) < 1e-9:
-            return f"Edge{i + 1}"
-    raise AssertionError("no rim")
-
-
 def lateral(obj):
     return next(f"Face{i + 1}" for i, f in enumerate(obj.Shape.Faces) if f.Surface.__class__.__name__ == "Cylinder")
 
@@ -57,7 +51,7 @@ def select(*links):
 
 def blend_by_command(doc, a, b):
     """Select each rim with its lateral face, run the command: the new object."""
-    select((a, lateral(a)), (a, rim(a, 1.0)), (b, lateral(b)), (b, rim(b, 2.0)))
+    select((a, lateral(a)), (a, rim_edge(a, 1.0)), (b, lateral(b)), (b, rim_edge(b, 2.0)))
     before = {o.Name for o in doc.Objects}
     run(NAME)
     created = [o for o in doc.Objects if o.Name not in before]
@@ -68,8 +62,8 @@ def blend_by_command(doc, a, b):
 def errors(blend, a, b):
     """OCCT's measure of the blend against each face along its rim (side A at v = 0, B at v = 1)."""
     surface = blend.Shape.Faces[0].Surface
-    sa = fw.blend_errors(surface, a.Shape.getElement(lateral(a)), a.Shape.getElement(rim(a, 1.0)), 0.0)
-    sb = fw.blend_errors(surface, b.Shape.getElement(lateral(b)), b.Shape.getElement(rim(b, 2.0)), 1.0)
+    sa = fw.blend_errors(surface, a.Shape.getElement(lateral(a)), a.Shape.getElement(rim_edge(a, 1.0)), 0.0)
+    sb = fw.blend_errors(surface, b.Shape.getElement(lateral(b)), b.Shape.getElement(rim_edge(b, 2.0)), 1.0)
     return sa, sb
 
 
@@ -97,7 +91,7 @@ def test_zebra_normals_follow_the_first_face_whichever_way_the_blend_runs(scene)
 
     doc, a, b = scene
     # from B down to A: the blend surface's own normal points into the cylinders here
-    back = make_face_blend(doc, (b, lateral(b)), (b, rim(b, 2.0)), (a, lateral(a)), (a, rim(a, 1.0)))
+    back = make_face_blend(doc, (b, lateral(b)), (b, rim_edge(b, 2.0)), (a, lateral(a)), (a, rim_edge(a, 1.0)))
     surface = back.Shape.Faces[0].Surface
     assert FreeCAD.Vector(*surface.normal(0.5, 0.0)).dot(surface.value(0.5, 0.0) - V(0, 0, 2.0)) < 0
     assert zebra_normals_point_out(back.ViewObject.Proxy.zebra)
@@ -107,19 +101,19 @@ def test_command_needs_two_edges_and_the_face_of_each(scene):
     from freecad_workbench.gui.commands.face_blend import blend_selection
 
     doc, a, b = scene
-    select((a, rim(a, 1.0)))
+    select((a, rim_edge(a, 1.0)))
     assert isinstance(blend_selection(), str)  # one edge
-    select((a, rim(a, 1.0)), (b, rim(b, 2.0)))
+    select((a, rim_edge(a, 1.0)), (b, rim_edge(b, 2.0)))
     message = blend_selection()  # each rim bounds the lateral face and a cap: which one?
     assert isinstance(message, str) and "select the face" in message, message
     before = len(doc.Objects)
     run(NAME)
     assert len(doc.Objects) == before and not gui().Control.activeDialog()
-    select((a, lateral(a)), (a, rim(a, 1.0)), (b, lateral(b)), (b, rim(b, 2.0)))
-    assert blend_selection() == (((a, lateral(a)), (a, rim(a, 1.0))), ((b, lateral(b)), (b, rim(b, 2.0))))
+    select((a, lateral(a)), (a, rim_edge(a, 1.0)), (b, lateral(b)), (b, rim_edge(b, 2.0)))
+    assert blend_selection() == (((a, lateral(a)), (a, rim_edge(a, 1.0))), ((b, lateral(b)), (b, rim_edge(b, 2.0))))
     cap = next(f"Face{i + 1}" for i, f in enumerate(a.Shape.Faces) if f.Surface.__class__.__name__ == "Plane"
                and abs(f.CenterOfMass.z - 1.0) < 1e-9)
-    select((a, cap), (a, rim(a, 1.0)), (b, lateral(b)), (b, rim(b, 2.0)))
+    select((a, cap), (a, rim_edge(a, 1.0)), (b, lateral(b)), (b, rim_edge(b, 2.0)))
     assert blend_selection()[0][0] == (a, cap)  # the face picked with the edge, not the first
 
 
@@ -325,25 +319,8 @@ def test_panel_fits_the_side_panel(scene, artifacts):
 def test_command_on_the_edges_of_two_b_spline_sheets_takes_their_only_faces(scene):
     """A wavy floor and a wavy wall (one bicubic face each, different in every way from the
     cylinders): two edges alone are enough; the blend is G2 along both, by OCCT's measure."""
-    import math
-
-    import Part
-
     doc = scene[0]
-
-    def sheet(name, point):
-        poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
-        surface = Part.BSplineSurface()
-        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
-        obj = doc.addObject("Part::Feature", name)
-        obj.Shape = surface.toShape()
-        return obj
-
-    floor = sheet("Floor", lambda s, t: V(60 * s - 30, 40 * t - 40, 3 * math.sin(3 * s) * math.sin(2 * t)))
-    wall = sheet("Wall", lambda s, t: V(60 * s - 30, 20 + 3 * math.sin(4 * s) * t, 20 + 40 * t))
-    doc.recompute()
-    edge_f = next(f"Edge{i + 1}" for i, e in enumerate(floor.Shape.Edges) if abs(e.CenterOfMass.y) < 1e-6)
-    edge_w = next(f"Edge{i + 1}" for i, e in enumerate(wall.Shape.Edges) if abs(e.CenterOfMass.z - 20) < 1e-6)
+    floor, edge_f, wall, edge_w = wavy_floor_and_wall(doc)
     select((floor, edge_f), (wall, edge_w))
     before = {o.Name for o in doc.Objects}
     run(NAME)

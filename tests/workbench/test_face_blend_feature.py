@@ -8,6 +8,7 @@ import Part
 
 import freecad_workbench as fw
 from freecad_workbench.features import FaceBlend, make_face_blend
+from tests.scenes import rim_edge
 
 V = FreeCAD.Vector
 
@@ -22,19 +23,12 @@ def _cylinders(doc, offset=0.0):
     return a, b
 
 
-def _rim_name(obj, z):
-    for i, e in enumerate(obj.Shape.Edges):
-        if e.Curve.__class__.__name__ == "Circle" and abs(e.CenterOfMass.z - z) < 1e-9:
-            return f"Edge{i + 1}"
-    raise AssertionError("no rim")
-
-
 def _poles(obj):
     return np.array([[tuple(p) for p in row] for row in obj.Shape.Faces[0].Surface.getPoles()])
 
 
 def _make(doc, a, b):
-    return make_face_blend(doc, (a, "Face1"), (a, _rim_name(a, 1.0)), (b, "Face1"), (b, _rim_name(b, 2.0)))
+    return make_face_blend(doc, (a, "Face1"), (a, rim_edge(a, 1.0)), (b, "Face1"), (b, rim_edge(b, 2.0)))
 
 
 def test_feature_is_g2_and_follows_its_sources(doc):
@@ -42,14 +36,14 @@ def test_feature_is_g2_and_follows_its_sources(doc):
     blend = _make(doc, a, b)
     assert blend.Status.startswith("ok: G2, exact / exact"), blend.Status
     surface = blend.Shape.Faces[0].Surface
-    errors = fw.blend_errors(surface, a.Shape.Faces[0], a.Shape.getElement(_rim_name(a, 1.0)), 0.0)
+    errors = fw.blend_errors(surface, a.Shape.Faces[0], a.Shape.getElement(rim_edge(a, 1.0)), 0.0)
     assert errors["gap"] < 1e-7 and errors["angle"] < 1e-4 and errors["curvature_jump"] < 1e-4, errors
     before = _poles(blend)
     b.Placement = FreeCAD.Placement(V(0.3, 0, 2.0), FreeCAD.Rotation())
     doc.recompute()
     moved = blend.Shape.Faces[0].Surface
     assert not np.allclose(_poles(blend), before)
-    errors = fw.blend_errors(moved, b.Shape.Faces[0], b.Shape.getElement(_rim_name(b, 2.0)), 1.0)
+    errors = fw.blend_errors(moved, b.Shape.Faces[0], b.Shape.getElement(rim_edge(b, 2.0)), 1.0)
     assert errors["gap"] < 1e-7 and errors["curvature_jump"] < 1e-4, errors
 
 
@@ -79,12 +73,12 @@ def test_bad_sources_keep_the_last_good_shape(doc):
     a, b = _cylinders(doc)
     blend = _make(doc, a, b)
     good = _poles(blend)
-    blend.EdgeB = (a, _rim_name(a, 0.0))  # an edge of the other face
+    blend.EdgeB = (a, rim_edge(a, 0.0))  # an edge of the other face
     doc.recompute()
     assert "edge_b is not an edge of face_b" in blend.Status
     assert "Invalid" in blend.State
     np.testing.assert_array_equal(_poles(blend), good)
-    blend.EdgeB = (b, _rim_name(b, 2.0))
+    blend.EdgeB = (b, rim_edge(b, 2.0))
     blend.Continuity = "G1"
     doc.recompute()
     assert blend.Status.startswith("ok: G1"), blend.Status
