@@ -98,12 +98,14 @@ public:
     FairFitResult result;
     result.noise = sigma_;
     if (plane_.planar) {
-      planar_.resize(S_.n);
-      for (Index i = 0; i < S_.n; ++i) {
-        const Vector3d d = S_.p[i] - plane_.origin;
-        planar_[i] = Vector3d(d.dot(plane_.e1), d.dot(plane_.e2), 0.0);
+      if (dim_ != 2) {  // 2D data are in their plane's coordinates already (planarPoints)
+        planar_.resize(S_.n);
+        for (Index i = 0; i < S_.n; ++i) {
+          const Vector3d d = S_.p[i] - plane_.origin;
+          planar_[i] = Vector3d(d.dot(plane_.e1), d.dot(plane_.e2), 0.0);
+        }
       }
-      shape_ = dataShape(S_, planar_, sigma_, tau, kCurv_, dim_ == 2);
+      shape_ = dataShape(S_, planarPoints(), sigma_, tau, kCurv_, dim_ == 2);
     }
     result.dataSignChanges = shape_.signChanges;
     if (plane_.planar) normal_ = dim_ == 2 ? Vector3d::UnitZ() : plane_.e1.cross(plane_.e2).normalized();
@@ -119,7 +121,7 @@ public:
         ++result.iterations;
         curve = build(sub);
         std::vector<double> dev;
-        maxDev = deviations(curve, sub, dev, &feet);
+        maxDev = deviations(curve, sub, dev, &feet, tau);
         if (maxDev <= tau) break;
         refine(sub, dev);
       }
@@ -152,7 +154,7 @@ public:
           const BSplineCurve candidate = build(fewer);
           std::vector<double> dev;
           std::vector<Foot> cFeet;
-          const double d = deviations(candidate, fewer, dev, &cFeet);
+          const double d = deviations(candidate, fewer, dev, &cFeet, tau);
           if (!(d <= tau)) continue;
           const Handle(Geom_BSplineCurve) cOcc = toOcct(candidate);
           const CurvatureProfile cProfile = profileOf(candidate, cOcc);
@@ -351,35 +353,46 @@ private:
 
   /// The largest distance of the samples of subset interval j (span j of P) to the curve,
   /// an upper bound (see projectDistance): each sample is projected from its chord-length
-  /// position between the subset samples around it.
-  /// With `feet`: the curve point found for each sample (at sample index - sub.index[0]).
-  double intervalDeviation(const SpanPolys& P, const Subset& sub, Index j, std::vector<Foot>* feet = nullptr) const {
+  /// position between the subset samples around it. Past `stopAbove` the first such distance
+  /// is returned (refine() asks only which intervals exceed the tolerance), except on an
+  /// interval of adjacent samples, whose largest distance its message names.
+  /// With `feet`: the curve point found for each sample (at sample index - sub.index[0]); an
+  /// interval's first sample is its predecessor's last, and keeps the nearer foot.
+  double intervalDeviation(const SpanPolys& P, const Subset& sub, Index j, std::vector<Foot>* feet = nullptr,
+                           double stopAbove = HUGE_VAL) const {
     const Index m = static_cast<Index>(sub.index.size());
     const Index a = sub.index[j], b = j + 1 < m ? sub.index[j + 1] : sub.index[0] + S_.n;
     detail::WorkBudget::spend(static_cast<double>(b - a + 1));
     const double sa = S_.arc(a), sb = S_.arc(b), h = P.h(j);
+    const bool mayStop = b - a >= 2;
     double d = 0.0;
     for (Index k = a; k <= b; ++k) {
       const double x = sb > sa ? (S_.arc(k) - sa) / (sb - sa) * h : 0.0;
-      const Foot foot = projectFoot(P, S_.p[S_.wrap(k)], j, x);
+      const Foot foot = projectFoot(P, S_.p[k < S_.n ? k : k - S_.n], j, x);  // a <= k < 2n
       d = std::max(d, foot.d);
-      if (feet && foot.d < (*feet)[k - sub.index[0]].d) (*feet)[k - sub.index[0]] = foot;
+      if (feet) {
+        Foot& f = (*feet)[k - sub.index[0]];
+        if (k > a || j == 0 || foot.d < f.d) f = foot;
+      }
+      if (mayStop && d > stopAbove) break;
     }
     return std::isfinite(d) ? d : HUGE_VAL;
   }
 
   /// Every subset interval's distance to the curve (intervalDeviation); returns the largest.
-  /// O(n). With `feet`: every sample's curve point (fair() starts from them).
+  /// O(n). With `feet`: every sample's curve point (fair() starts from them), valid when the
+  /// largest is within `stopAbove` (an interval beyond it stops at its first sample beyond).
   double deviations(const BSplineCurve& curve, const Subset& sub, std::vector<double>& dev,
-                    std::vector<Foot>* feet = nullptr) const {
+                    std::vector<Foot>* feet = nullptr, double stopAbove = HUGE_VAL) const {
     const Handle(Geom_BSplineCurve) occ = toOcct(curve);
     const SpanPolys P = spanPolys(curve, occ);
     const Index m = static_cast<Index>(sub.index.size()), intervals = S_.closed ? m : m - 1;
     dev.assign(intervals, 0.0);
-    if (feet) feet->assign((S_.closed ? S_.n : sub.index.back() - sub.index.front()) + 1, Foot{0, 0.0, HUGE_VAL});
+    // Every slot is written below (no fill: 10^6 feet are 24 MB).
+    if (feet) feet->resize((S_.closed ? S_.n : sub.index.back() - sub.index.front()) + 1);
     double worst = 0.0;
     for (Index j = 0; j < intervals; ++j) {
-      dev[j] = intervalDeviation(P, sub, j, feet);
+      dev[j] = intervalDeviation(P, sub, j, feet, stopAbove);
       worst = std::max(worst, dev[j]);
     }
     return worst;
@@ -462,14 +475,13 @@ private:
     cf.q = &S_.p;
     cf.fixed = fixedPoles(curve.poles.rows());
 
-    cf.sample.reserve(feet.size());
-    cf.feet.reserve(feet.size());
-    for (std::size_t k = 0; k < feet.size(); ++k) {
-      if (!(feet[k].d <= o_.tolerance)) continue;  // not measured: checked below with the rest
-      cf.sample.push_back(S_.wrap(at0 + static_cast<Index>(k)));
-      cf.feet.push_back(feet[k]);
-    }
-    if (cf.feet.size() != feet.size()) return;
+    // Every sample measured within the tolerance (else the rest are checked later on).
+    for (const Foot& foot : feet)
+      if (!(foot.d <= o_.tolerance)) return;
+    cf.sample.resize(feet.size());
+    for (std::size_t k = 0; k < feet.size(); ++k) cf.sample[k] = S_.wrap(at0 + static_cast<Index>(k));
+    cf.feet.swap(feet);  // given back below unless a faired curve is taken (no copy of 10^6 feet)
+    std::vector<Foot> given;  // the feet as given, once a pass has moved cf.feet on
     const SplineSpace space{std::vector<double>(curve.knots.data(), curve.knots.data() + curve.knots.size()),
                             S_.closed};
     // Outer passes: the constraints hold each sample at its foot's parameter, so a pass may
@@ -477,16 +489,16 @@ private:
     // the next pass starts from there, while the energy still drops by 1 %.
     const int passes = cf.feet.size() > 100000 ? 1 : 3;
     BSplineCurve best = curve;
-    std::vector<Foot> bestFeet;
+    bool faired = false;
     double bestDev = maxDev, lastEnergy = HUGE_VAL;
     for (int pass = 0; pass < passes; ++pass) {
       Eigen::MatrixX3d P = polesOf(best);
       fairUnderTolerance(space, P, cf);
       if (!(cf.energyAfter < cf.energyBefore) || !P.allFinite()) break;
-      BSplineCurve faired = best;
-      setPoles(faired, P);
-      const Handle(Geom_BSplineCurve) occ = toOcct(faired);
-      const SpanPolys SP = spanPolys(faired, occ);
+      BSplineCurve next = best;
+      setPoles(next, P);
+      const Handle(Geom_BSplineCurve) occ = toOcct(next);
+      const SpanPolys SP = spanPolys(next, occ);
       std::vector<Foot> moved(cf.feet.size());
       double d = 0.0;
       for (std::size_t k = 0; k < cf.feet.size(); ++k) {
@@ -494,19 +506,26 @@ private:
         d = std::max(d, moved[k].d);
       }
       if (!(d <= o_.tolerance)) break;
-      best = std::move(faired), bestDev = d, cf.feet = moved, bestFeet = std::move(moved);
+      if (!faired) given = std::move(cf.feet);
+      best = std::move(next), bestDev = d, cf.feet = std::move(moved), faired = true;
       const bool converged = cf.energyAfter > 0.99 * std::min(lastEnergy, cf.energyBefore);
       lastEnergy = cf.energyAfter;
       if (converged) break;
     }
-    if (bestFeet.empty()) return;
+    if (!faired) {
+      feet.swap(cf.feet);
+      return;
+    }
     const SpanPolys SP = spanPolys(best, toOcct(best));
     CurvatureProfile fProfile = spanProfile(SP, normal_, 16);
     const int fChanges = curvatureSignChanges(fProfile);
     const int fExtrema = static_cast<int>(curvatureExtrema(fProfile).size());
-    if (fChanges > changes || fExtrema > extrema) return;
+    if (fChanges > changes || fExtrema > extrema) {
+      feet = std::move(given);
+      return;
+    }
     curve = std::move(best), maxDev = bestDev, changes = fChanges, extrema = fExtrema, profile = std::move(fProfile);
-    feet = std::move(bestFeet);
+    feet = std::move(cf.feet);
   }
 
   /// Step 11 (fair_fit_signs.cpp): where the fit still has more curvature sign changes than
@@ -527,7 +546,7 @@ private:
   bool imposeSigns(BSplineCurve& curve, std::vector<Foot>& feet, Index at0, double& maxDev, int& changes, int& extrema,
                    CurvatureProfile& profile) const {
     if (!signsMayBeImposed(changes) || feet.empty()) return false;
-    const std::vector<SignSwitch> pattern = turningPattern(planar_, S_.s, sigma_);
+    const std::vector<SignSwitch> pattern = turningPattern(planarPoints(), S_.s, sigma_);
     const int target = static_cast<int>(pattern.size()) - 1;
     if (pattern.empty() || changes <= target) return false;
     const double tau = o_.tolerance;
@@ -774,7 +793,9 @@ private:
   Index kPos_ = 2, kCurv_ = 8;
   Plane plane_;
   std::optional<Vector3d> normal_;  // the data's plane normal, for the signs of curvature (planar data)
-  std::vector<Vector3d> planar_;
+  std::vector<Vector3d> planar_;    // 3D data in their plane's coordinates (planarPoints)
+  /// The samples in their plane's coordinates (z = 0): 2D data as they are.
+  const std::vector<Vector3d>& planarPoints() const { return dim_ == 2 ? S_.p : planar_; }
   DataShape shape_;
   mutable std::optional<int> imposed_;  // the sign changes of the data's pattern, when step 11 imposed it
 };
@@ -784,7 +805,7 @@ private:
 
 /// The points of one stretch between corners (rows a .. b of q, b past the end wrapping round
 /// closed data), with midpoints added between the widest neighbours up to 4 points.
-PointMatrix stretch(const PointMatrix& q, Index a, Index b) {
+PointMatrix stretch(PointsRef q, Index a, Index b) {
   const Index n = q.rows();
   std::vector<Eigen::RowVectorXd> rows;
   for (Index i = a; i <= b; ++i) rows.push_back(q.row(i % n));
@@ -808,7 +829,8 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
   FairFitOptions o = options;
   o.closed = M.closed;
   o.tolerance = options.tolerance - M.offset;  // a dropped point is within offset of the one kept
-  Samples S = readSamples(M.q, M.closed);
+  const PointsRef Q = M.samples(q);
+  Samples S = readSamples(Q, M.closed);
   const double sigma = options.noise ? *options.noise : estimateNoise(S, q.cols() == 2);
   if (o.tolerance < sigma) {
     // A curve that close to every sample follows the noise: the fit would be met (step 8
@@ -819,22 +841,22 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
         << 3.0 * sigma << " (3 times the noise) or more can be met";
     throw InputError(msg.str());
   }
-  const std::vector<Index> corners = findCorners(S, sigma, M.origin);
+  const std::vector<Index> corners = findCorners(S, sigma, M);
   auto finish = [&](FairFitResult r) {
     r.mergedPoints = M.merged;
     r.closed = M.closed;
     r.recognisedClosed = M.recognisedClosed;
-    for (Index c : corners) r.corners.push_back(M.origin[c]);
+    for (Index c : corners) r.corners.push_back(M.inputRow(c));
     if (M.merged > 0) r.maxDeviation += M.offset;
     return r;
   };
   using Corners = FairFitOptions::Corners;
   if (corners.empty() || options.corners == Corners::Smooth) {
-    return finish(FairFitter(M.q, o, std::move(S), sigma).run());
+    return finish(FairFitter(Q, o, std::move(S), sigma).run());
   }
   if (options.corners == Corners::Refuse && !(M.closed && corners.size() == 1)) {
     std::ostringstream msg;
-    msg << "the points have a sharp corner at point " << M.origin[corners.front()];
+    msg << "the points have a sharp corner at point " << M.inputRow(corners.front());
     if (corners.size() > 1) msg << " (and " << corners.size() - 1 << " more)";
     msg << " (numbered from 0): a smooth curve would round it off. corners='keep' fits each stretch between "
            "corners on its own, corners='smooth' fits one smooth curve through them";
@@ -842,7 +864,7 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
   }
   // Keep: the stretches between corners (closed data: round from the first corner to it).
   std::vector<std::pair<Index, Index>> spans;
-  const Index n = M.q.rows();
+  const Index n = Q.rows();
   if (M.closed) {
     for (std::size_t c = 0; c < corners.size(); ++c)
       spans.push_back({corners[c], c + 1 < corners.size() ? corners[c + 1] : corners.front() + n});
@@ -859,7 +881,7 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
     op.noise = sigma;
     if (p > 0) op.startTangent.reset(), op.startCurvature.reset();
     if (p + 1 < spans.size()) op.endTangent.reset(), op.endCurvature.reset();
-    const FairFitResult r = FairFitter(stretch(M.q, spans[p].first, spans[p].second), op).run();
+    const FairFitResult r = FairFitter(stretch(Q, spans[p].first, spans[p].second), op).run();
     all.pieces.push_back(r.curve);
     all.maxDeviation = std::max(all.maxDeviation, r.maxDeviation);
     all.signChanges += r.signChanges, all.dataSignChanges += r.dataSignChanges;

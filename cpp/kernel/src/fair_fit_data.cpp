@@ -18,15 +18,15 @@ namespace fairsplines::detail::fairfit {
 
 Samples readSamples(PointsRef q, bool closed) {
   Samples S;
-  const SampleInfo info = validateSamples(q, closed, 4, "the fair fit");
   S.n = q.rows();
   S.closed = closed;
-  S.size = info.size;
+  // The chords land in s_1.. and are summed in place (no second array of n values).
+  S.s.resize(std::max<Index>(closed ? S.n : S.n - 1, 0) + 1);
+  S.size = validateSamplesInto(q, closed, 4, "the fair fit", S.s.data() + 1);
+  S.s[0] = 0.0;
+  for (std::size_t i = 1; i < S.s.size(); ++i) S.s[i] += S.s[i - 1];
   S.p.resize(S.n, Vector3d::Zero());
   for (Index i = 0; i < S.n; ++i) S.p[i].head(q.cols()) = q.row(i).transpose();
-  S.s.resize(info.chords.size() + 1);
-  S.s[0] = 0.0;
-  for (Index i = 0; i < info.chords.size(); ++i) S.s[i + 1] = S.s[i] + info.chords[i];
   return S;
 }
 

@@ -43,12 +43,19 @@ Samples readSamples(PointsRef q, bool closed);
 /// the run's first point are that one point; data whose last point repeats the first
 /// (within it) are closed, when `mayClose` (open data without end conditions) or closed.
 struct MergedInput {
-  PointMatrix q;
-  std::vector<Index> origin;  // the input row of each kept sample
+  PointMatrix kept;           // the kept rows, when a point other than a closing repeat was dropped
+  Index rows = 0;             // the number of kept samples
+  std::vector<Index> origin;  // the input row of each kept sample (empty: sample i is row i)
   Index merged = 0;           // input points dropped
   double offset = 0.0;        // the largest distance from a dropped point to the one kept
   bool closed = false;
   bool recognisedClosed = false;  // open data whose last point repeats the first
+  /// The samples to fit: `input` itself (or its first rows) when nothing inside it was merged,
+  /// so that 10^6 clean samples are not copied.
+  PointsRef samples(PointsRef input) const {
+    return kept.rows() > 0 ? PointsRef(kept) : PointsRef(input.topRows(rows));
+  }
+  Index inputRow(Index i) const { return origin.empty() ? i : origin[static_cast<std::size_t>(i)]; }
 };
 
 /// Merge coincident and near-coincident neighbours: the merge distance is 1e-3 of the
@@ -63,7 +70,7 @@ MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance, bool may
 /// stride neighbours. Throws InputError naming the samples (in the input's numbering,
 /// `origin`) where the data run back along themselves: two consecutive turns beyond 135
 /// degrees, as a pair of points out of order makes.
-std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector<Index>& origin);
+std::vector<Index> findCorners(const Samples& S, double sigma, const MergedInput& M);
 
 // ---------------------------------------------------------------------------------------
 // Local least-squares quadratics: the noise-smoothed estimate, curvature and noise residual

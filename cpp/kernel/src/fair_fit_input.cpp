@@ -28,47 +28,56 @@ MergedInput mergeCoincident(PointsRef q, bool closed, double tolerance, bool may
   const double delta = std::max(2e-12 * size, std::min(1e-9 * size, 1e-3 * tolerance));
   MergedInput out;
   out.closed = closed;
-  std::vector<Index> keep;
-  keep.reserve(n);
-  Index run = 0;  // the first point of the present run
+  // The kept rows' input numbers, built only from the first merge on (clean data: none).
+  std::vector<Index>& keep = out.origin;
+  Index kept = 0, run = 0;  // kept rows so far; the first point of the present run
   for (Index i = 0; i < n; ++i) {
     if (i > 0) {
       const double d = (q.row(i) - q.row(run)).norm();
       if (d <= delta) {
+        if (keep.empty()) {
+          keep.reserve(n);
+          for (Index j = 0; j < i; ++j) keep.push_back(j);
+        }
         out.offset = std::max(out.offset, d);
         ++out.merged;
         continue;
       }
     }
     run = i;
-    keep.push_back(i);
+    if (!keep.empty()) keep.push_back(i);
+    ++kept;
   }
   // The last point repeating the first: closed data (the repeat dropped).
-  if (keep.size() > 2 && (closed || mayClose)) {
-    const double d = (q.row(keep.back()) - q.row(keep.front())).norm();
+  if (kept > 2 && (closed || mayClose)) {
+    const Index last = keep.empty() ? kept - 1 : keep.back();
+    const double d = (q.row(last) - q.row(0)).norm();
     if (d <= delta) {
       out.offset = std::max(out.offset, d);
       ++out.merged;
-      keep.pop_back();
+      --kept;
+      if (!keep.empty()) keep.pop_back();
       out.recognisedClosed = !closed;
       out.closed = true;
     }
   }
-  if (keep.size() < 4 && out.merged > 0) {
-    if (keep.size() == 1) throw InputError("the fair fit needs points that do not all coincide: all points coincide");
+  if (kept < 4 && out.merged > 0) {
+    if (kept == 1) throw InputError("the fair fit needs points that do not all coincide: all points coincide");
     throw InputError("the fair fit needs at least 4 distinct points: after merging coincident neighbours, " +
-                     std::to_string(keep.size()) + " distinct points remain");
+                     std::to_string(kept) + " distinct points remain");
   }
-  out.q.resize(static_cast<Index>(keep.size()), dim);
-  for (std::size_t j = 0; j < keep.size(); ++j) out.q.row(static_cast<Index>(j)) = q.row(keep[j]);
-  out.origin = std::move(keep);
+  out.rows = kept;
+  if (!keep.empty()) {
+    out.kept.resize(kept, dim);
+    for (Index j = 0; j < kept; ++j) out.kept.row(j) = q.row(keep[static_cast<std::size_t>(j)]);
+  }
   return out;
 }
 
 // ---------------------------------------------------------------------------------------
 // Order and corners
 
-std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector<Index>& origin) {
+std::vector<Index> findCorners(const Samples& S, double sigma, const MergedInput& M) {
   const Index n = S.n;
   std::vector<Index> corners;
   if (n < 5) return corners;
@@ -86,42 +95,50 @@ std::vector<Index> findCorners(const Samples& S, double sigma, const std::vector
     k *= 2;
   }
   auto inside = [&](Index i) { return S.closed || (i - k >= 0 && i + k <= n - 1); };
-  // turn[i]: the angle between the chords q_(i-k) -> q_i and q_i -> q_(i+k).
-  std::vector<double> turn(n, 0.0);
-  for (Index i = 0; i < n; ++i) {
-    if (!inside(i)) continue;
+  // turn(i): the angle between the chords q_(i-k) -> q_i and q_i -> q_(i+k) (0 at the ends
+  // of open data); beyond(i, c): whether it exceeds the angle whose cosine is c, from the
+  // chords' dot product alone (most samples turn little: no angle, no square root for them).
+  auto turn = [&](Index i) {
+    if (!inside(i)) return 0.0;
     const Vector3d a = at(i) - at(i - k), b = at(i + k) - at(i);
-    const double la = a.norm(), lb = b.norm();
-    if (!(la > 0.0 && lb > 0.0)) continue;
-    turn[i] = std::atan2(a.cross(b).norm(), a.dot(b));
-  }
+    if (!(a.squaredNorm() > 0.0 && b.squaredNorm() > 0.0)) return 0.0;
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+  };
+  auto beyond = [&](Index i, double c) {
+    if (!inside(i)) return false;
+    const Vector3d a = at(i) - at(i - k), b = at(i + k) - at(i);
+    const double dot = a.dot(b), aa = a.squaredNorm(), bb = b.squaredNorm();
+    if (!(aa > 0.0 && bb > 0.0)) return false;
+    return c >= 0.0 ? dot < 0.0 || dot * dot < c * c * aa * bb : dot < 0.0 && dot * dot > c * c * aa * bb;
+  };
   // Points out of order: the data run back along themselves at two consecutive samples
   // (stride 1, chords above the noise).
   if (k == 1) {
+    const double back = std::cos(135.0 * M_PI / 180.0);
     for (Index i = 0; i + 1 < n; ++i) {
-      if (!inside(i) || !inside(i + 1)) continue;
-      const double back = 135.0 * M_PI / 180.0;
-      if (turn[i] > back && turn[i + 1] > back) {
+      if (beyond(i, back) && beyond(i + 1, back)) {
         std::ostringstream msg;
         msg << "the points are not in order along the curve: the data run back on themselves at points "
-            << origin[S.wrap(i)] << " and " << origin[S.wrap(i + 1)]
+            << M.inputRow(S.wrap(i)) << " and " << M.inputRow(S.wrap(i + 1))
             << " (numbered from 0), as a pair of points out of order does; sort the points along the curve";
         throw InputError(msg.str());
       }
     }
   }
   // Corners: a turn of at least 30 degrees, at least 5 times the turns a stride away, and
-  // the largest within half a stride.
-  const double minTurn = 30.0 * M_PI / 180.0;
+  // the largest within half a stride (the angles themselves only past a 29 degree screen).
+  const double minTurn = 30.0 * M_PI / 180.0, screen = std::cos(29.0 * M_PI / 180.0);
   for (Index i = 0; i < n; ++i) {
-    if (!inside(i) || turn[i] < minTurn) continue;
-    const double left = inside(i - k) ? turn[S.wrap(i - k)] : 0.0, right = inside(i + k) ? turn[S.wrap(i + k)] : 0.0;
-    if (!(turn[i] >= 5.0 * std::max(left, right))) continue;
+    if (!beyond(i, screen)) continue;
+    const double ti = turn(i);
+    if (ti < minTurn) continue;
+    const double left = inside(i - k) ? turn(S.wrap(i - k)) : 0.0, right = inside(i + k) ? turn(S.wrap(i + k)) : 0.0;
+    if (!(ti >= 5.0 * std::max(left, right))) continue;
     bool largest = true;
     for (Index d = -(k / 2); d <= k / 2 && largest; ++d) {
       if (d == 0 || !inside(i + d)) continue;
-      const double other = turn[S.wrap(i + d)];
-      if (other > turn[i] || (other == turn[i] && d < 0)) largest = false;
+      const double other = turn(S.wrap(i + d));
+      if (other > ti || (other == ti && d < 0)) largest = false;
     }
     if (largest) corners.push_back(i);
   }
