@@ -99,6 +99,28 @@ def test_hairpin_roads_are_fitted_within_five_times_the_noise_with_their_sign_ch
     assert sum(exact) >= 38, [seed for seed, ok in enumerate(exact) if not ok]
 
 
+def test_hairpin_roads_given_in_3d_keep_their_sign_changes_as_in_2d():
+    """The same roads given as 3D points: with z = 0 (even seeds) and in a tilted, shifted
+    plane (odd seeds). The data's noise is read in their plane (one normal, as in 2D; with two
+    it read 0.57 of itself, so that noise counted as turns: 8 of 10 exact before), and the
+    sign pattern is imposed there: exactly the road's sign changes about the plane's normal in
+    at least 38 of 40 seeds, every sample within the tolerance."""
+    a = 0.4
+    rot = np.array([[1.0, 0.0, 0.0], [0.0, math.cos(a), -math.sin(a)], [0.0, math.sin(a), math.cos(a)]])
+    exact = []
+    for seed in range(40):
+        pts, true_changes = hairpin_road(seed)
+        pts3 = np.column_stack([pts, np.zeros(len(pts))])
+        normal = (0.0, 0.0, 1.0)
+        if seed % 2:
+            pts3 = pts3 @ rot.T + np.array([5.0, -3.0, 2.0])
+            normal = tuple(rot @ np.array(normal))
+        curve, report = fit_within(pts3, 0.25)
+        assert report.noise > 0.05, (seed, report.noise)  # as in 2D (0.054-0.073); 0.040-0.043 with two normals
+        exact.append(sign_changes(signed_curvatures(curve, normal=normal)) == true_changes)
+    assert sum(exact) >= 38, [seed for seed, ok in enumerate(exact) if not ok]
+
+
 # ---- real input: repeated, near-coincident, out of order, closed
 
 @pytest.mark.parametrize("gap", [0.0, 1e-13])

@@ -73,8 +73,7 @@ public:
 
   FairFitResult run() {
     const double tau = o_.tolerance;
-    const bool planarFits = dim_ == 2;
-    sigma_ = o_.noise ? *o_.noise : estimated_ ? *estimated_ : estimateNoise(S_, planarFits);
+    sigma_ = o_.noise ? *o_.noise : estimated_ ? *estimated_ : estimateNoise(S_, static_cast<int>(dim_));
     plane_ = dataPlane(S_, static_cast<int>(dim_), std::max(0.5 * tau, 6.0 * sigma_));
     // Samples whose noise is below 1/100 of the tolerance are used as they are (on noise-free
     // data the "noise" estimated is the local quadratics' model error; smoothing would only
@@ -263,7 +262,7 @@ private:
       }
     }
     if (!smooth_) return S_.p[i];
-    const LocalFit f = localFit(S_.p, S_.n, S_.closed, i, kPos_, dim_ == 2);
+    const LocalFit f = localFit(S_.p, S_.n, S_.closed, i, kPos_, dim_ == 2 ? &kPlaneZ : nullptr);
     return f.ok ? f.point : S_.p[i];
   }
 
@@ -831,7 +830,7 @@ FairFitResult fitInput(PointsRef q, const FairFitOptions& options) {
   o.tolerance = options.tolerance - M.offset;  // a dropped point is within offset of the one kept
   const PointsRef Q = M.samples(q);
   Samples S = readSamples(Q, M.closed);
-  const double sigma = options.noise ? *options.noise : estimateNoise(S, q.cols() == 2);
+  const double sigma = options.noise ? *options.noise : estimateNoise(S, static_cast<int>(q.cols()));
   if (o.tolerance < sigma) {
     // A curve that close to every sample follows the noise: the fit would be met (step 8
     // pins it) but not fair. About 3 times the noise is the least a smooth curve keeps.

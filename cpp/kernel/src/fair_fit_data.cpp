@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "fairsplines/errors.hpp"
@@ -33,8 +34,9 @@ Samples readSamples(PointsRef q, bool closed) {
 // ---------------------------------------------------------------------------------------
 // Local least-squares quadratics: the noise-smoothed estimate, curvature and noise residual
 
-LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i, Index k, bool planar) {
+LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i, Index k, const Vector3d* normal) {
   LocalFit fit;
+  const bool planar = normal != nullptr;
   k = std::min<Index>(k, closed ? (n - 1) / 2 : (n - 1) / 2);
   if (k < 1) return fit;
   Index lo = i - k, hi = i + k;
@@ -51,7 +53,7 @@ LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i,
   e /= 2.0 * L;
   Vector3d n1, n2;
   if (planar) {
-    n1 = Vector3d(-e.y(), e.x(), 0.0);
+    n1 = normal->cross(e);  // (-e_y, e_x, 0) in the plane z = 0
   } else {
     n1 = e.unitOrthogonal();
     n2 = e.cross(n1);
@@ -83,11 +85,18 @@ LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i,
   return fit;
 }
 
-double estimateNoise(const Samples& S, bool planar) {
+double estimateNoise(const Samples& S, int dim) {
+  std::optional<Vector3d> normal;
+  if (dim == 2) {
+    normal = kPlaneZ;
+  } else if (const Plane P = dataPlane(S, 3, 1e-9 * S.size); P.planar) {
+    normal = P.e1.cross(P.e2).normalized();
+  }
+  const bool planar = normal.has_value();
   const Index stride = std::max<Index>(1, S.n / 4096);
   std::vector<double> v;
   for (Index i = 0; i < S.n; i += stride) {
-    const LocalFit f = localFit(S.p, S.n, S.closed, i, 3, planar);
+    const LocalFit f = localFit(S.p, S.n, S.closed, i, 3, planar ? &*normal : nullptr);
     if (f.ok && f.hat < 1.0) v.push_back(f.residual2 / (1.0 - f.hat));
   }
   if (v.empty()) return 0.0;
@@ -130,7 +139,7 @@ DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints,
   std::vector<Index> at;
   std::vector<int> sign;
   for (Index i = 0; i < S.n; i += stride) {
-    const LocalFit f = localFit(planarPoints, S.n, S.closed, i, kc, true);
+    const LocalFit f = localFit(planarPoints, S.n, S.closed, i, kc, &kPlaneZ);
     int sgn = 0;
     if (f.ok) {
       const Index lo = std::max<Index>(0, i - kc), hi = std::min<Index>(S.n - 1, i + kc);
@@ -187,7 +196,7 @@ DataShape dataShape(const Samples& S, const std::vector<Vector3d>& planarPoints,
       // squares line pinned at a noisy end point would be tilted by that point's noise and
       // leave a kink of the noise's size, hence a false inflection, where the run ends).
       c = atStart ? S.p[0] : S.p[S.n - 1];
-      const LocalFit far = localFit(S.p, S.n, S.closed, atStart ? last : first, kc, planarFits);
+      const LocalFit far = localFit(S.p, S.n, S.closed, atStart ? last : first, kc, planarFits ? &kPlaneZ : nullptr);
       dir = ((far.ok ? far.point : S.p[atStart ? last : first]) - c).normalized();
       if (atEnd) dir = -dir;
     } else {

@@ -85,15 +85,19 @@ struct LocalFit {
 };
 
 /// Fit w(u) = a + b u + c u^2 to the 2k + 1 samples around q_i in the frame of the window's
-/// chord (u along it, w the normal offsets; one normal in the plane when `planar`, two in
-/// 3D). The window is shifted inside open data and wraps around closed data.
-LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i, Index k, bool planar);
+/// chord (u along it, w the normal offsets; with a plane's unit `normal` nu the one normal
+/// nu x e in that plane, the curvature signed about nu; without, two normals in 3D). The
+/// window is shifted inside open data and wraps around closed data.
+LocalFit localFit(const std::vector<Vector3d>& p, Index n, bool closed, Index i, Index k, const Vector3d* normal);
+inline const Vector3d kPlaneZ = Vector3d::UnitZ();  // the plane of 2D data and of planar coordinates
 
 /// The default noise: the median of the squared centre residuals r_i^2 / (1 - h_i) of
 /// 7-sample local quadratic fits at up to 4096 samples spread over the data, divided by the
 /// median of chi^2 with as many degrees of freedom as normals (0.455 planar, 1.386 in 3D),
-/// so that Gaussian noise of standard deviation sigma per coordinate gives sigma.
-double estimateNoise(const Samples& S, bool planar);
+/// so that Gaussian noise of standard deviation sigma per coordinate gives sigma. 3D data
+/// that lie in a plane to rounding (1e-9 of their size: a road given with z = 0) have one
+/// normal, as 2D data do (with two, their noise would read 0.57 of itself).
+double estimateNoise(const Samples& S, int dim);
 
 // ---------------------------------------------------------------------------------------
 // The plane of the data (for the signs of curvature)
