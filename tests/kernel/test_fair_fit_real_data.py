@@ -121,6 +121,34 @@ def test_hairpin_roads_given_in_3d_keep_their_sign_changes_as_in_2d():
     assert sum(exact) >= 38, [seed for seed, ok in enumerate(exact) if not ok]
 
 
+def test_densely_sampled_roads_keep_their_sign_changes():
+    """The roads sampled every 5 cm, the noise's own size (16,700-17,900 samples): the sign
+    pattern's chord headings (5 m chords) start every half chord, so a straight's noise does
+    not read as turns (scanned at every sample they made 4-6 sign changes of the road's 3,
+    2 of 8 seeds exact). Every sample within the tolerance, the road's 3 sign changes."""
+    for seed in range(4):
+        pts, true_changes = hairpin_road(seed, spacing=0.05)
+        curve, report = fit_within(pts, 0.25)
+        assert report.data_sign_changes == true_changes, (seed, report.data_sign_changes)
+        assert sign_changes(signed_curvatures(curve)) == true_changes, seed
+
+
+def test_closed_data_with_inflections_keep_exactly_their_sign_changes():
+    """A closed peanut r = 1 + 0.6 cos 2 theta (4 inflections, from its closed-form
+    curvature r^2 + 2 r'^2 - r r'') with noise 1e-3, closed, at 5 times the noise: exactly
+    its sign changes, counted round the seam."""
+    th = np.linspace(0.0, 2.0 * math.pi, 100000, endpoint=False)
+    r, dr, ddr = 1 + 0.6 * np.cos(2 * th), -1.2 * np.sin(2 * th), -2.4 * np.cos(2 * th)
+    true_changes = sign_changes(r * r + 2 * dr * dr - r * ddr, closed=True)
+    assert true_changes == 4
+    for seed in range(4):
+        t = np.linspace(0.0, 2.0 * math.pi, 400, endpoint=False)
+        rr = 1 + 0.6 * np.cos(2 * t)
+        pts = np.c_[rr * np.cos(t), rr * np.sin(t)] + np.random.default_rng(seed).normal(0.0, 1e-3, (400, 2))
+        curve, report = fit_within(pts, 5e-3, closed=True)
+        assert sign_changes(signed_curvatures(curve), closed=True) == true_changes, seed
+
+
 # ---- real input: repeated, near-coincident, out of order, closed
 
 @pytest.mark.parametrize("gap", [0.0, 1e-13])

@@ -307,7 +307,8 @@ struct SignSwitch {
 
 /// The data's sign pattern (open planar data, in-plane coordinates `planar`, cumulative
 /// chord lengths `s`, noise sigma): the headings of chords k samples long (k: the least whose
-/// mean is 100 sigma), scanned with hysteresis: a turn counts when the heading moves away
+/// mean is 100 sigma) starting every ceil(k / 2) samples (independent neighbours), scanned
+/// with hysteresis: a turn counts when the heading moves away
 /// from its running extreme by more than 5 deviations of the two headings' noise (sqrt(2)
 /// sigma / chord each). The first move gives the first sign (at = -1); each reversal a
 /// switch at the heading's extreme (the inflection), in the middle of the stretch whose
