@@ -199,7 +199,7 @@ def curvature_map(brep: str, quantity: str = "gaussian", deflection: float = 0.0
 
 def blend_faces(brep_a: str, edge_a: int, brep_b: str, edge_b: int, continuity: int = 2, flip: bool = False,
                 start: float = 0.0, end: float = 1.0, sections: int = 13, scale_a: float = 0.0,
-                scale_b: float = 0.0) -> tuple[BSplineSurface, dict]: ...
+                scale_b: float = 0.0, continuity_b: int = 0) -> tuple[BSplineSurface, dict]: ...
 
 # ---- basic shapes and their blends (blending paper, Sections 2-5)
 

@@ -36,7 +36,7 @@ FaceBlendReport.__module__ = "freecad_workbench"
 FaceBlendReport.__doc__ = (
     "The report of blend_faces: sides (two dicts, a then b: method 'exact', surface_type, isoparametric 'u', 'v' "
     "or 'line', alpha and beta of v(s) = v0 - alpha s + beta s^2 / 2, scale = alpha over the default magnitude, "
-    "bend = beta / alpha, rational, closed); sections (one dict per cross section: u in [0, 1], monotone "
+    "bend = beta / alpha, rational, closed, continuity 1 or 2); sections (one dict per cross section: u in [0, 1], monotone "
     "(certified), curvature_extrema (certificate), sampled_extrema, kappa_min, kappa_max, variation, reason); "
     "errors (two dicts from blend_errors, a then b, or None when measure=False); valid (BRepCheck of the blend's "
     "face); evaluations (candidates judged by the fairness search); size (diagonal of the blend's pole box)."
@@ -126,12 +126,27 @@ def _fraction(value, name, default):
     return default if value is None else as_real(value, name)
 
 
-def blend_faces(face_a: Any, edge_a: Any, face_b: Any, edge_b: Any, continuity: str = "G2", flip: bool = False,
+def _continuities(continuity: Any) -> tuple[int, int]:
+    """(edge a's, edge b's) continuity as 1 (G1) or 2 (G2), from "G1", "G2" or a pair of them."""
+    if isinstance(continuity, (tuple, list)):
+        if len(continuity) != 2:
+            raise InputError(f"continuity must be 'G1', 'G2' or a pair of them (edge a's, edge b's), got {continuity!r}")
+        pair = (as_choice(continuity[0], "edge a's continuity", ("G1", "G2")),
+                as_choice(continuity[1], "edge b's continuity", ("G1", "G2")))
+    else:
+        g = as_choice(continuity, "continuity", ("G1", "G2"))
+        pair = (g, g)
+    return tuple(1 if g == "G1" else 2 for g in pair)
+
+
+def blend_faces(face_a: Any, edge_a: Any, face_b: Any, edge_b: Any, continuity: Any = "G2", flip: bool = False,
                 start: Optional[float] = None, end: Optional[float] = None, sections: int = 13,
                 scale_a: Optional[float] = None, scale_b: Optional[float] = None,
                 measure: bool = True) -> tuple[Any, FaceBlendReport]:
     """(Part.BSplineSurface, FaceBlendReport): the G1 or G2 blend from face_a along edge_a to
-    face_b along edge_b (docs/FACE_BLENDS.md). u runs along the edges in [0, 1] (edge_a's
+    face_b along edge_b (docs/FACE_BLENDS.md); continuity "G1", "G2" or a pair for the two edges,
+    e.g. ("G2", "G1") (across the blend: degree 5 for G2 both, 4 for G2 and G1, 3 for G1 both).
+    u runs along the edges in [0, 1] (edge_a's
     direction; flip=True pairs edge_a's start with edge_b's end), v from edge_a (0) to edge_b (1).
     start, end: the part of each edge covered, fractions of its parameter range (default 0, 1).
     scale_a, scale_b > 0 fix the cross-boundary derivative magnitudes as multiples of the default
@@ -140,7 +155,7 @@ def blend_faces(face_a: Any, edge_a: Any, face_b: Any, edge_b: Any, continuity: 
     Raises InputError naming the problem: an edge not on its face, a degenerate edge, an edge that
     is not an isoparametric boundary (trimmed edges, seams: fitted blends are not implemented),
     faces that touch, a blend that would cross itself, or a result BRepCheck calls invalid."""
-    g = as_choice(continuity, "continuity", ("G1", "G2"))
+    ka, kb = _continuities(continuity)
     flip = as_flag(flip, "flip")
     measure = as_flag(measure, "measure")
     t0, t1 = _fraction(start, "start", 0.0), _fraction(end, "end", 1.0)
@@ -152,7 +167,7 @@ def blend_faces(face_a: Any, edge_a: Any, face_b: Any, edge_b: Any, continuity: 
     fa, ia = _side(face_a, edge_a, "a")
     fb, ib = _side(face_b, edge_b, "b")
     surface, raw = kernel.blend_faces(fa.exportBrepToString(), ia, fb.exportBrepToString(), ib,
-                                      1 if g == "G1" else 2, flip, t0, t1, count, sa, sb)
+                                      ka, flip, t0, t1, count, sa, sb, kb)
     blend = surface_to_part(surface)
     face = blend.toShape()
     valid = bool(face.isValid())

@@ -27,6 +27,7 @@ py::dict sideDict(const FaceBlendSide& s) {
   d["bend"] = s.bend;
   d["rational"] = s.rational;
   d["closed"] = s.closed;
+  d["continuity"] = s.continuity;
   return d;
 }
 
@@ -49,9 +50,10 @@ void bindFaceBlend(py::module_& m) {
   m.def(
       "blend_faces",
       [](const std::string& brepA, int edgeA, const std::string& brepB, int edgeB, int continuity, bool flip,
-         double start, double end, int sections, double scaleA, double scaleB) {
+         double start, double end, int sections, double scaleA, double scaleB, int continuityB) {
         FaceBlendOptions o;
         o.continuity = continuity;
+        o.continuityB = continuityB;
         o.flip = flip;
         o.start = start;
         o.end = end;
@@ -70,10 +72,11 @@ void bindFaceBlend(py::module_& m) {
         return py::make_tuple(fromOcct(blend.surface), report);
       },
       "brep_a"_a, "edge_a"_a, "brep_b"_a, "edge_b"_a, "continuity"_a = 2, "flip"_a = false, "start"_a = 0.0,
-      "end"_a = 1.0, "sections"_a = 13, "scale_a"_a = 0.0, "scale_b"_a = 0.0,
+      "end"_a = 1.0, "sections"_a = 13, "scale_a"_a = 0.0, "scale_b"_a = 0.0, "continuity_b"_a = 0,
       "(BSplineSurface, report) of the G1 (continuity 1) or G2 (2) blend between the one face of brep_a along its "
       "edge number edge_a (from 1, as Face.Edges) and that of brep_b along edge_b; u along the edges in [0, 1], v "
-      "from edge a to edge b. scale_a, scale_b > 0 fix the derivative magnitudes (0: chosen for fairness).");
+      "from edge a to edge b. continuity_b: edge b's when it differs (0: continuity). scale_a, scale_b > 0 fix the "
+      "derivative magnitudes (0: chosen for fairness).");
 }
 
 }  // namespace fairsplines::python

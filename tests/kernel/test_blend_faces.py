@@ -286,6 +286,32 @@ def test_g1_against_occt_fillet():
     assert max(e["curvature_jump"] for e in report2.errors) < 1e-6
 
 
+def test_continuity_per_side_g2_on_one_edge_g1_on_the_other():
+    """("G2", "G1"): G2 along edge a, G1 along edge b, a quartic across (3 rows set by side a, 2 by
+    side b). OCCT's referee: side a within every tolerance; side b in position and normal, and its
+    curvature across is the blend's own (the cylinder's is 0 along its generator, the blend's is
+    not), so it is G1 there and no more. Swapped, the roles swap."""
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.5, 2.0, 1.0)
+    ea, eb = _rim(a, 1.0), _rim(b, 2.0)
+    for pair in (("G2", "G1"), ("G1", "G2")):
+        blend, report = fw.blend_faces(a, ea, b, eb, continuity=pair)
+        assert blend.VDegree == 4, pair
+        assert [side["continuity"] for side in report.sides] == [2 if g == "G2" else 1 for g in pair]
+        assert report.valid and blend.toShape().isValid()
+        for g, errors in zip(pair, report.errors):
+            assert errors["samples"] == 101 and errors["gap"] <= GAP and errors["angle"] <= ANGLE, (pair, errors)
+            if g == "G2":
+                assert errors["curvature_jump_across"] <= CURVATURE, (pair, errors)
+            else:
+                assert errors["curvature_jump_across"] > 1e-3, (pair, errors)
+    # One choice for both stays as it was: degree 5 (G2) and 3 (G1).
+    assert fw.blend_faces(a, ea, b, eb, continuity="G2")[0].VDegree == 5
+    assert fw.blend_faces(a, ea, b, eb, continuity="G1")[0].VDegree == 3
+    for bad in (("G2",), ("G2", "G3"), ("G1", "G2", "G2")):
+        with pytest.raises(fw.InputError, match="continuity"):
+            fw.blend_faces(a, ea, b, eb, continuity=bad)
+
+
 def test_trimmed_edge_is_refused_with_its_reason():
     plane = Part.makePlane(2, 2)
     disc = Part.Face(Part.Wire(Part.makeCircle(0.5, V(1, 1, 0))))

@@ -6,9 +6,10 @@
 // position, first and second cross-boundary derivative exactly (Piegl & Tiller, The NURBS Book,
 // eq. (3.17), derivative poles of a B-spline). Both edges are mapped to u in [0, 1] (linear maps,
 // the flip reverses one), degree-elevated to a common u-degree and their knot vectors merged by
-// knot insertion, so both sides' rows share one u-basis. The blend is a Bezier in s of degree 5
-// (G2) or 3 (G1) whose first three (two) rows are those of side A under the reparametrisation
-// v(s) = v0 - alpha s + beta s^2 / 2, likewise the last rows from side B: C2 (C1) in
+// knot insertion, so both sides' rows share one u-basis. The blend is a Bezier in s of degree
+// kA + kB + 1 (kA, kB each side's continuity: 5 for G2 both, 4 for G2 and G1, 3 for G1 both)
+// whose first kA + 1 rows are those of side A under the reparametrisation
+// v(s) = v0 - alpha s + beta s^2 / 2, likewise the last kB + 1 rows from side B: C2 (C1) in
 // homogeneous coordinates after a reparametrisation, hence G2 (G1), exact to rounding along the
 // whole edge (section 2 of the doc has the formulas). alpha, beta are constants per side (a
 // polynomial in u would raise the u-degree) chosen for fairness of the cross sections: fewest
@@ -351,6 +352,9 @@ void requireNoFold(const Handle(Geom_BSplineSurface)& s, double size) {
 FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& faceB, int edgeB,
                      const FaceBlendOptions& o) {
   if (o.continuity != 1 && o.continuity != 2) throw InputError("continuity must be G1 or G2");
+  if (o.continuityB != 0 && o.continuityB != 1 && o.continuityB != 2)
+    throw InputError("edge b's continuity must be G1 or G2");
+  const int kA = o.continuity, kB = o.continuityB != 0 ? o.continuityB : o.continuity;
   if (!(o.start >= 0.0 && o.end <= 1.0 && o.end - o.start > 1e-9))
     throw InputError("start and end must satisfy 0 <= start < end <= 1, got " + num(o.start) + ", " + num(o.end));
   if (o.sections < 2 || o.sections > 1000) throw InputError("sections must lie in [2, 1000]");
@@ -403,8 +407,8 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
       throw InputError("the faces touch: edge_a and edge_b meet at u = " + num(u) + " of the edges");
   }
   if (!(speedA > 0 && speedB > 0)) throw InputError("a face's cross-boundary derivative vanishes along its edge");
-  const int n = o.continuity == 2 ? 5 : 3;
-  Search search{sections, A, B, chord / speedA, chord / speedB, n};
+  const int n = kA + kB + 1;  // the degree across: each side sets rows 0 .. k of its end
+  Search search{sections, A, B, chord / speedA, chord / speedB, kA, kB};
   const std::array<double, 4> x = searchMagnitudes(search, o);
   const Magnitudes ma = search.magnitudes(x[0], x[1], search.alpha0A);
   const Magnitudes mb = search.magnitudes(x[2], x[3], search.alpha0B);
@@ -413,10 +417,9 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
   TColgp_Array2OfPnt poles(1, nu, 1, n + 1);
   TColStd_Array2OfReal weights(1, nu, 1, n + 1);
   const auto rowsA = sideRows<Rows>(A.r0, A.d1, A.d2, ma, n), rowsB = sideRows<Rows>(B.r0, B.d1, B.d2, mb, n);
-  const int k = n == 5 ? 3 : 2;
   for (int i = 0; i < nu; ++i)
-    for (int r = 0; r < k; ++r)
-      for (int side = 0; side < 2; ++side) {
+    for (int side = 0; side < 2; ++side)
+      for (int r = 0; r <= (side == 0 ? kA : kB); ++r) {
         const Vec4 h = (side == 0 ? rowsA[r] : rowsB[r]).row(i).transpose();
         const int col = side == 0 ? r : n - r;
         if (!(h[3] > 0) || !h.allFinite())
@@ -461,10 +464,12 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
   b.report.beta = mb.beta;
   b.report.scale = x[2];
   b.report.bend = x[3];
+  a.report.continuity = kA;
+  b.report.continuity = kB;
   out.sides[0] = a.report;
   out.sides[1] = b.report;
   for (const SectionData& d : sections) {
-    const Net net = sectionNet(d, ma, mb, n);
+    const Net net = sectionNet(d, ma, mb, kA, kB);
     const Sampled sampled = sampleSection(net, kSamples, true);
     if (sampled.folded) throw InputError("the blend would cross itself: its section at u = " + num(d.u) + " folds");
     FaceBlendSection section;

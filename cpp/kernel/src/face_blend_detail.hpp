@@ -27,7 +27,8 @@ struct Magnitudes {
 };
 
 /// Rows 0, 1 (, 2) of a Bezier of degree n in s matching the side to first (second) order under
-/// v(s) = v0 - alpha s + beta s^2 / 2:  B_s = -alpha P_v,  B_ss = alpha^2 P_vv + beta P_v.
+/// v(s) = v0 - alpha s + beta s^2 / 2:  B_s = -alpha P_v,  B_ss = alpha^2 P_vv + beta P_v. A side
+/// of continuity k (1: G1, 2: G2) sets rows 0 .. k; the degree across is n = kA + kB + 1.
 template <class R>
 std::array<R, 3> sideRows(const R& r0, const R& d1, const R& d2, const Magnitudes& m, int n) {
   const R r1 = r0 - (m.alpha / n) * d1;
@@ -52,8 +53,9 @@ struct Sampled {
 constexpr int kSamples = 96;        // per section in the report
 constexpr int kSearchSamples = 48;  // per section in the fairness search
 
-/// The Bezier points of the section at d.u with the sides' magnitudes (degree n: 5 or 3).
-Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int n);
+/// The Bezier points of the section at d.u with the sides' magnitudes: rows 0 .. kA of side A,
+/// rows n - kB .. n of side B, degree n = kA + kB + 1 (3, 4 or 5).
+Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int kA, int kB);
 
 /// Value and first two derivatives of a Bezier of degree n <= 5 at s.
 std::array<Vec4, 3> bezierJet(const Net& c, double s);
@@ -71,15 +73,15 @@ struct Search {
   const Boundary& A;
   const Boundary& B;
   double alpha0A, alpha0B;
-  int n;
+  int kA, kB;  ///< each side's continuity (1: G1, 2: G2); the degree across is kA + kB + 1
   int evaluations = 0;
 
   /// Every weight of the blend's rows stays above 1e-3 of the boundary's smallest (the rows'
   /// weights are those of eq. (2.3), column 3).
-  bool positiveWeights(const Boundary& side, const Magnitudes& m) const {
+  bool positiveWeights(const Boundary& side, const Magnitudes& m, int k) const {
     const double floor = 1e-3 * side.r0.col(3).minCoeff();
-    const auto rows = sideRows<Eigen::VectorXd>(side.r0.col(3), side.d1.col(3), side.d2.col(3), m, n);
-    return rows[1].minCoeff() > floor && (n == 3 || rows[2].minCoeff() > floor);
+    const auto rows = sideRows<Eigen::VectorXd>(side.r0.col(3), side.d1.col(3), side.d2.col(3), m, kA + kB + 1);
+    return rows[1].minCoeff() > floor && (k == 1 || rows[2].minCoeff() > floor);
   }
 
   Magnitudes magnitudes(double scale, double bend, double alpha0) const {

@@ -14,14 +14,12 @@ namespace fairsplines::face_blend_detail {
 // ---------------------------------------------------------------------------------------
 // Cross sections: rational Bezier curves in s
 
-Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int n) {
+Net sectionNet(const SectionData& d, const Magnitudes& ma, const Magnitudes& mb, int kA, int kB) {
+  const int n = kA + kB + 1;
   Net c(n + 1, 4);
   const auto ra = sideRows<Vec4>(d.a0, d.a1, d.a2, ma, n), rb = sideRows<Vec4>(d.b0, d.b1, d.b2, mb, n);
-  const int k = n == 5 ? 3 : 2;
-  for (int i = 0; i < k; ++i) {
-    c.row(i) = ra[i];
-    c.row(n - i) = rb[i];
-  }
+  for (int i = 0; i <= kA; ++i) c.row(i) = ra[i];
+  for (int i = 0; i <= kB; ++i) c.row(n - i) = rb[i];
   return c;
 }
 
@@ -98,10 +96,10 @@ Sampled sampleSection(const Net& c, int samples, bool selfApproach) {
 double Search::cost(const std::array<double, 4>& x) {
   ++evaluations;
   const Magnitudes ma = magnitudes(x[0], x[1], alpha0A), mb = magnitudes(x[2], x[3], alpha0B);
-  if (!positiveWeights(A, ma) || !positiveWeights(B, mb)) return std::numeric_limits<double>::infinity();
+  if (!positiveWeights(A, ma, kA) || !positiveWeights(B, mb, kB)) return std::numeric_limits<double>::infinity();
   double total = 0.0;
   for (const SectionData& d : sections) {
-    const Sampled s = sampleSection(sectionNet(d, ma, mb, n), kSearchSamples, false);
+    const Sampled s = sampleSection(sectionNet(d, ma, mb, kA, kB), kSearchSamples, false);
     if (s.folded) return std::numeric_limits<double>::infinity();
     total += 1000.0 * s.extrema + s.variation;
   }
@@ -109,7 +107,6 @@ double Search::cost(const std::array<double, 4>& x) {
 }
 
 std::array<double, 4> searchMagnitudes(Search& search, const FaceBlendOptions& o) {
-  const bool g2 = o.continuity == 2;
   const bool fixedA = o.scaleA > 0, fixedB = o.scaleB > 0;
   std::array<double, 4> best{fixedA ? o.scaleA : 1.0, 0.0, fixedB ? o.scaleB : 1.0, 0.0};
   double bestCost = search.cost(best);
@@ -126,7 +123,8 @@ std::array<double, 4> searchMagnitudes(Search& search, const FaceBlendOptions& o
       }
     }
   std::array<double, 4> step{0.2, 0.5, 0.2, 0.5};
-  std::array<bool, 4> free{!fixedA, g2 && !fixedA, !fixedB, g2 && !fixedB};
+  // The bend (beta / alpha) moves the section only where the side is G2 (row 2 is set).
+  std::array<bool, 4> free{!fixedA, search.kA == 2 && !fixedA, !fixedB, search.kB == 2 && !fixedB};
   for (int round = 0; round < 6; ++round) {
     bool improved = false;
     for (int k = 0; k < 4; ++k) {
