@@ -50,10 +50,14 @@ def bicubic_face():
 
 
 def interleaved(calls, repeats):
-    """Seconds of each call of each function, the functions taking turns (the machine is
-    shared: its load moves between runs), with the garbage collector off."""
+    """(best, median, first) seconds of each function's calls, the functions taking turns
+    (the machine is shared: its load moves between runs), with the garbage collector off;
+    first: the first call, a warm-up (its results land in fresh memory)."""
+    first = []
     for f in calls:
-        f()  # warm up
+        t0 = time.perf_counter()
+        f()
+        first.append(time.perf_counter() - t0)
     was_enabled = gc.isenabled()
     gc.collect()
     gc.disable()
@@ -67,7 +71,7 @@ def interleaved(calls, repeats):
     finally:
         if was_enabled:
             gc.enable()
-    return [(min(t), statistics.median(t)) for t in times]
+    return [(min(t), statistics.median(t), t1) for t, t1 in zip(times, first)]
 
 
 def curvature(n, repeats):
@@ -82,7 +86,7 @@ def curvature(n, repeats):
         for u, v in pairs:
             face.curvatureAt(u, v)
 
-    (whole, whole_median), (core, core_median), (occt, occt_median) = interleaved(
+    (whole, whole_median, whole_first), (core, core_median, _), (occt, occt_median, _) = interleaved(
         [lambda: fw.surface_curvature(face, uv), lambda: kernel.surface_curvature(brep, uv), loop], repeats)
     print(f"surface_curvature, {n} points of a bicubic face (7 x 7 spans), best / median of {repeats}, interleaved:")
     print(f"  fw.surface_curvature {whole * 1e3:7.2f} / {whole_median * 1e3:7.2f} ms   "
@@ -90,6 +94,8 @@ def curvature(n, repeats):
           f"({n / core / 1e6:.1f} / {n / core_median / 1e6:.1f} million points/s)")
     print(f"  Python loop over Face.curvatureAt {occt * 1e3:7.1f} / {occt_median * 1e3:7.1f} ms   "
           f"ratio {occt / whole:.1f}x / {occt_median / whole_median:.1f}x")
+    print(f"  first call of fw.surface_curvature (fresh memory) {whole_first * 1e3:7.2f} ms   "
+          f"ratio to the loop's median {occt_median / whole_first:.1f}x")
 
 
 def mesh_baseline(deflection):

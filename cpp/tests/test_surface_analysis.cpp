@@ -98,7 +98,7 @@ TEST(SurfaceAnalysis, SpherePolesAreFiniteUmbilics) {
     EXPECT_NEAR(c.k1()[i], 1.0 / 3.0, 1e-9);
     EXPECT_NEAR(c.k2()[i], 1.0 / 3.0, 1e-9);
     EXPECT_EQ(c.state[i], static_cast<int>(PointState::Degenerate));
-    EXPECT_NEAR(std::abs(c.normal(i, 2)), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(c.normal()(i, 2)), 1.0, 1e-9);
   }
 }
 
@@ -128,7 +128,7 @@ TEST(SurfaceAnalysis, CylinderHasInverseRadiusAcrossAndZeroAlong) {
   for (Eigen::Index i = 0; i < c.k1().size(); ++i) {
     EXPECT_NEAR(c.k1()[i], 1.0 / 1.5, 1e-12);
     EXPECT_NEAR(c.k2()[i], 0.0, 1e-12);
-    EXPECT_NEAR(std::abs(c.dir2(i, 2)), 1.0, 1e-12);  // the axis
+    EXPECT_NEAR(std::abs(c.dir2()(i, 2)), 1.0, 1e-12);  // the axis
   }
 }
 

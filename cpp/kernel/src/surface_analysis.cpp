@@ -155,10 +155,11 @@ Principal principalCurvatures(const SurfaceFrame& f) {
   const double x0 = rowA ? x0a : x0b, x1 = rowA ? x1a : x1b;
   gp_Vec dir = f.su * x0 + f.sv * x1;
   const double scale = std::max(std::abs(k.k1), std::abs(k.k2));
-  const double dirLength = dir.Magnitude();
+  const double gap = 1e-12 * (k.k1 - k.k2);
   // Umbilic (k1 = k2 to 1e-8 of their size, a plane included): every direction is
-  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides.
-  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dirLength > 1e-12 * std::abs(k.k1 - k.k2) * std::sqrt(f.E + f.G))) {
+  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides:
+  // |dir| <= 1e-12 (k1 - k2) sqrt(E + G), compared squared (no square roots).
+  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dir.SquareMagnitude() > gap * gap * (f.E + f.G))) {
     k.state = PointState::Umbilic;
     dir = f.su.Magnitude() > 0.0 ? f.su : f.sv;
   }
