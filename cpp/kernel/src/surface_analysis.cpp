@@ -217,7 +217,6 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
     }
   }
   namespace column = curvature_column;
-  detail::SurfaceFrame f;
   detail::Principal k;
   // Each point's 16 values go straight into the caller's block, one column each.
   const auto put = [&values](Eigen::Index i, int c, const gp_XYZ& x) {
@@ -225,38 +224,59 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
     values(i, c + 1) = x.Y();
     values(i, c + 2) = x.Z();
   };
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double u = uv(i, 0), v = uv(i, 1);
-    bool defined = false;
+  // OCCT throws where a surface cannot be evaluated (an offset surface past its validity).
+  const auto guarded = [&uv](Eigen::Index i, auto&& evaluate) {
     try {
-      defined = surface.curvature(u, v, f, k);
+      return evaluate();
     } catch (const Standard_Failure& e) {
-      throw InputError("the surface cannot be evaluated at " + pointName(i, u, v) + " (" + e.GetMessageString() + ")");
+      throw InputError("the surface cannot be evaluated at " + pointName(i, uv(i, 0), uv(i, 1)) + " (" +
+                       e.GetMessageString() + ")");
     }
-    if (!defined) {
-      throw InputError("the curvature is not defined at " + pointName(i, u, v) +
-                       ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
-                       "without bound towards it");
+  };
+  // In batches: the frames of a few points, then their curvatures. Both are chains of square
+  // roots and divisions; the points of a batch are independent, and in these shorter loops the
+  // processor overlaps their chains (one point's whole evaluation is too long for it to reach
+  // the next point's).
+  constexpr Eigen::Index kBatch = 8;
+  detail::SurfaceFrame frames[kBatch];
+  bool regular[kBatch];
+  for (Eigen::Index i0 = 0; i0 < n; i0 += kBatch) {
+    const Eigen::Index m = std::min(kBatch, n - i0);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const Eigen::Index i = i0 + j;
+      regular[j] = guarded(i, [&] { return surface.frame(uv(i, 0), uv(i, 1), frames[j]); });
     }
-    const double K = k.k1 * k.k2;
-    if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(K))) {
-      throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const Eigen::Index i = i0 + j;
+      const double u = uv(i, 0), v = uv(i, 1);
+      detail::SurfaceFrame& f = frames[j];
+      if (regular[j]) {
+        k = detail::principalCurvatures(f);
+      } else if (!guarded(i, [&] { return surface.curvature(u, v, f, k); })) {  // the limit at a degenerate point
+        throw InputError("the curvature is not defined at " + pointName(i, u, v) +
+                         ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
+                         "without bound towards it");
+      }
+      const double K = k.k1 * k.k2;
+      if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(K))) {
+        throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
+      }
+      // Unit vectors: their sum is finite exactly when each coordinate is.
+      if (!std::isfinite(k.dir1.X() + k.dir1.Y() + k.dir1.Z() + f.n.X() + f.n.Y() + f.n.Z())) {
+        throw InputError("the principal directions or the normal at " + pointName(i, u, v) +
+                         " are not finite: the surface is too large, too small or too close to singular there for "
+                         "double precision");
+      }
+      values(i, column::k1) = k.k1;
+      values(i, column::k2) = k.k2;
+      values(i, column::gaussian) = K;
+      values(i, column::mean) = 0.5 * (k.k1 + k.k2);
+      put(i, column::dir1, k.dir1.XYZ());
+      put(i, column::dir2, k.dir2.XYZ());
+      put(i, column::normal, f.n.XYZ());
+      put(i, column::point, f.p.XYZ());
+      state[i] = static_cast<std::int8_t>(k.state);
     }
-    // Unit vectors: their sum is finite exactly when each coordinate is.
-    if (!std::isfinite(k.dir1.X() + k.dir1.Y() + k.dir1.Z() + f.n.X() + f.n.Y() + f.n.Z())) {
-      throw InputError("the principal directions or the normal at " + pointName(i, u, v) +
-                       " are not finite: the surface is too large, too small or too close to singular there for "
-                       "double precision");
-    }
-    values(i, column::k1) = k.k1;
-    values(i, column::k2) = k.k2;
-    values(i, column::gaussian) = K;
-    values(i, column::mean) = 0.5 * (k.k1 + k.k2);
-    put(i, column::dir1, k.dir1.XYZ());
-    put(i, column::dir2, k.dir2.XYZ());
-    put(i, column::normal, f.n.XYZ());
-    put(i, column::point, f.p.XYZ());
-    state[i] = static_cast<std::int8_t>(k.state);
   }
 }
 
