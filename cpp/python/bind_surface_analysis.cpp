@@ -48,8 +48,8 @@ void bindSurfaceAnalysis(py::module_& m) {
         const TopoDS_Face face = singleFace(readBrepShape(brep));
         // The results in one numpy block, (16, n) in C order (the kernel's column-major n x 16),
         // written by the kernel in place and handed out as views of it. numpy allocates it and
-        // advises huge pages for it: on a loaded virtual machine first touching 26 MB of fresh
-        // memory costs 3-9 ms so, against 75-90 ms in 4 KB pages (docs/SURFACE_ANALYSIS.md).
+        // advises huge pages for it: on the shared virtual machine first touching 26 MB of fresh
+        // memory costs 3-8 ms so, against 75-120 ms in 4 KB pages (docs/SURFACE_ANALYSIS.md).
         const py::ssize_t n = uv.rows(), width = curvature_column::count;
         py::array_t<double> block({width, n});
         py::array_t<std::int8_t> state(n);
