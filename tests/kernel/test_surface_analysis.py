@@ -276,6 +276,12 @@ def test_results_are_views_of_one_block_and_match_occt(reverse):
             assert abs(np.dot(c.dir1[i], d1)) == pytest.approx(1.0, abs=1e-8)
             assert abs(np.dot(c.dir2[i], d2)) == pytest.approx(1.0, abs=1e-8)
         assert np.allclose(np.cross(c.dir1[i], c.dir2[i]), c.normal[i], atol=1e-12)
+    # uv is read in place when C-ordered; other layouts (Fortran order, every other row, every
+    # other column of a wider array) give the same values.
+    for other in (np.asfortranarray(uv), np.repeat(uv, 2, axis=0)[::2], np.repeat(uv, 2, axis=1)[:, ::2]):
+        assert not other.flags.c_contiguous
+        o = fw.surface_curvature(face, other)
+        assert np.array_equal(o.k1, c.k1) and np.array_equal(o.dir1, c.dir1) and np.array_equal(o.points, c.points)
 
 
 # ---- continuity across edges
