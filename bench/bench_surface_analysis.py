@@ -1,8 +1,9 @@
 """Python benchmark of surface analysis (issue 27), each against its baseline in one run:
 
 - fw.surface_curvature on N points of a bicubic B-spline face (7 x 7 knot spans) against a
-  Python loop over Face.curvatureAt at the same points; and the kernel alone (the call
-  without the BRep hand-over of the face), in points per second;
+  Python loop over Face.curvatureAt at the same points, interleaved runs, best and median;
+  and the kernel binding alone (the call without the BRep export of the face), in points
+  per second;
 - fw.curvature_map of a torus against the Mesh workbench's curvature (Mesh.getCurvaturePerVertex)
   on a meshing of the same face: time, and the error of each against the closed form;
 - fw.curvature_map of 10 filleted boxes (260 faces) meshed to 0.001 mm: build time;
@@ -16,9 +17,11 @@
 
 (smoke: N = 2000 and one filleted box, for `make bench-smoke`.)
 """
+import gc
 import itertools
 import math
 import os
+import statistics
 import sys
 import time
 
@@ -46,23 +49,53 @@ def bicubic_face():
     return Part.Face(s)
 
 
-def curvature(n):
+def interleaved(calls, repeats):
+    """(best, median, first) seconds of each function's calls, the functions taking turns
+    (the machine is shared: its load moves between runs), with the garbage collector off;
+    first: the first call, a warm-up (its results land in fresh memory)."""
+    first = []
+    for f in calls:
+        t0 = time.perf_counter()
+        f()
+        first.append(time.perf_counter() - t0)
+    was_enabled = gc.isenabled()
+    gc.collect()
+    gc.disable()
+    try:
+        times = [[] for _ in calls]
+        for _ in range(repeats):
+            for f, t in zip(calls, times):
+                t0 = time.perf_counter()
+                f()
+                t.append(time.perf_counter() - t0)
+    finally:
+        if was_enabled:
+            gc.enable()
+    return [(min(t), statistics.median(t), t1) for t, t1 in zip(times, first)]
+
+
+def curvature(n, repeats):
     face = bicubic_face()
     u0, u1, v0, v1 = face.ParameterRange
     rng = np.random.default_rng(27)
     uv = np.c_[rng.uniform(u0, u1, n), rng.uniform(v0, v1, n)]
     brep = face.exportBrepToString()
-    whole = best(lambda: fw.surface_curvature(face, uv), 3, sample=0.2)
-    core = best(lambda: kernel.surface_curvature(brep, uv), 3, sample=0.2)
     pairs = uv.tolist()
-    t0 = time.perf_counter()
-    for u, v in pairs:
-        face.curvatureAt(u, v)
-    loop = time.perf_counter() - t0
-    print(f"surface_curvature, {n} points of a bicubic face (7 x 7 spans):")
-    print(f"  fw.surface_curvature {whole * 1e3:9.2f} ms   kernel alone {core * 1e3:9.2f} ms "
-          f"({n / core / 1e6:.1f} million points/s)")
-    print(f"  Python loop over Face.curvatureAt {loop * 1e3:9.1f} ms   ratio {loop / whole:.0f}x")
+
+    def loop():
+        for u, v in pairs:
+            face.curvatureAt(u, v)
+
+    (whole, whole_median, whole_first), (core, core_median, _), (occt, occt_median, _) = interleaved(
+        [lambda: fw.surface_curvature(face, uv), lambda: kernel.surface_curvature(brep, uv), loop], repeats)
+    print(f"surface_curvature, {n} points of a bicubic face (7 x 7 spans), best / median of {repeats}, interleaved:")
+    print(f"  fw.surface_curvature {whole * 1e3:7.2f} / {whole_median * 1e3:7.2f} ms   "
+          f"kernel binding alone {core * 1e3:7.2f} / {core_median * 1e3:7.2f} ms "
+          f"({n / core / 1e6:.1f} / {n / core_median / 1e6:.1f} million points/s)")
+    print(f"  Python loop over Face.curvatureAt {occt * 1e3:7.1f} / {occt_median * 1e3:7.1f} ms   "
+          f"ratio {occt / whole:.1f}x / {occt_median / whole_median:.1f}x")
+    print(f"  first call of fw.surface_curvature (fresh memory) {whole_first * 1e3:7.2f} ms   "
+          f"ratio to the loop's best {occt / whole_first:.1f}x")
 
 
 def mesh_baseline(deflection):
@@ -149,7 +182,7 @@ def continuity(count):
 
 if __name__ == "__main__":
     smoke = sys.argv[1:] == ["smoke"]
-    curvature(2000 if smoke else 200000)
+    curvature(2000 if smoke else 200000, 3 if smoke else 7)
     mesh_baseline(0.05 if smoke else 0.01)
     map_build(1 if smoke else 10, 0.05 if smoke else 0.001)
     map_recolour(1 if smoke else 4, 0.05 if smoke else 0.00035)

@@ -189,7 +189,7 @@ def fair_fit(points: FloatArray, tolerance: float, closed: bool = False, noise: 
 
 def surface_curvature(brep: str, uv: FloatArray
                       ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
-                                 FloatArray, FloatArray, IntArray]: ...
+                                 FloatArray, FloatArray, npt.NDArray[np.int8]]: ...  # views of one (16, N) block
 def edge_continuity(brep: str, samples_per_span: int = 0, gap_tolerance: float = -1.0,
                     angle_tolerance: float = 0.1, curvature_tolerance: float = 0.02) -> list[dict]: ...
 def curvature_map(brep: str, quantity: str = "gaussian", deflection: float = 0.0, fraction: float = 0.05,

@@ -87,10 +87,7 @@ def _uv(uv) -> np.ndarray:
         raise InputError("uv is empty: no points to evaluate")
     if len(array) > MAX_POINTS:
         raise InputError(f"uv has {len(array)} points, more than {MAX_POINTS}: split the call")
-    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
-    if bad.size:
-        raise InputError(f"uv point {bad[0]} is not finite: {tuple(array[bad[0]])}")
-    return array
+    return array  # the kernel names a point that is not finite, in its one pass over uv
 
 
 def surface_curvature(face: Any, uv: PointsLike) -> SurfaceCurvature:
@@ -100,6 +97,7 @@ def surface_curvature(face: Any, uv: PointsLike) -> SurfaceCurvature:
     Convex is positive as seen from Face.normalAt's side. Raises InputError for bad uv (wrong
     shape, NaN, more than 10% outside the face's parameter range), where the surface cannot
     be evaluated, or at a singular point without a limit (a cone's apex), naming the point."""
+    # Views of one (16, N) block the kernel wrote in place (cpp/python/bind_surface_analysis.cpp).
     k1, k2, gaussian, mean, dir1, dir2, normal, points, state = kernel.surface_curvature(_brep(face, "face"), _uv(uv))
     return SurfaceCurvature(k1, k2, gaussian, mean, dir1, dir2, normal, points, state == 1, state == 2)
 

@@ -81,13 +81,13 @@ int fuzzOne(FuzzInput& in) {
 
   SurfaceCurvature c;
   if (guarded("surfaceCurvature", [&] { c = surfaceCurvature(face, uv); })) {
-    requireFinite("surfaceCurvature", "k1", c.k1);
-    requireFinite("surfaceCurvature", "k2", c.k2);
-    requireFinite("surfaceCurvature", "direction", c.dir1);
-    requireFinite("surfaceCurvature", "direction", c.dir2);
-    requireFinite("surfaceCurvature", "normal", c.normal);
-    for (Eigen::Index i = 0; i < c.k1.size(); ++i) {
-      if (c.k1[i] < c.k2[i]) fail("surfaceCurvature", "k1 < k2 at point " + std::to_string(i));
+    requireFinite("surfaceCurvature", "k1", c.k1());
+    requireFinite("surfaceCurvature", "k2", c.k2());
+    requireFinite("surfaceCurvature", "direction", c.dir1());
+    requireFinite("surfaceCurvature", "direction", c.dir2());
+    requireFinite("surfaceCurvature", "normal", c.normal());
+    for (Eigen::Index i = 0; i < c.k1().size(); ++i) {
+      if (c.k1()[i] < c.k2()[i]) fail("surfaceCurvature", "k1 < k2 at point " + std::to_string(i));
     }
   }
   ContinuityOptions options;

@@ -1,10 +1,14 @@
 // Bindings for surface analysis (issue 27): shapes arrive as BRep text (Part's
 // exportBrepToString, the same on every FreeCAD and OCCT version) and results leave as arrays.
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
+
 #include "fairsplines/surface_analysis.hpp"
+#include "fairsplines/types.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -40,17 +44,32 @@ py::dict continuityDict(const EdgeContinuity& r) {
 void bindSurfaceAnalysis(py::module_& m) {
   m.def(
       "surface_curvature",
-      [](const std::string& brep, const Eigen::Ref<const Eigen::MatrixXd>& uv) {
-        SurfaceCurvature c = surfaceCurvature(singleFace(readBrepShape(brep)), uv);
-        // Moved into numpy (pybind11 keeps the moved matrix alive): no copy of the results.
-        return py::make_tuple(py::cast(std::move(c.k1)), py::cast(std::move(c.k2)), py::cast(std::move(c.gaussian)),
-                              py::cast(std::move(c.mean)), py::cast(std::move(c.dir1)), py::cast(std::move(c.dir2)),
-                              py::cast(std::move(c.normal)), py::cast(std::move(c.points)),
-                              py::cast(std::move(c.state)));
+      [](const std::string& brep, const PointsRef& uv) {
+        const TopoDS_Face face = singleFace(readBrepShape(brep));
+        // The results in one numpy block, (16, n) in C order (the kernel's column-major n x 16),
+        // written by the kernel in place and handed out as views of it. numpy allocates it and
+        // advises huge pages for it: on the shared virtual machine first touching 26 MB of fresh
+        // memory costs 3-8 ms so, against 75-120 ms in 4 KB pages (docs/SURFACE_ANALYSIS.md).
+        const py::ssize_t n = uv.rows(), width = curvature_column::count;
+        py::array_t<double> block({width, n});
+        py::array_t<std::int8_t> state(n);
+        surfaceCurvature(face, uv, Eigen::Map<CurvatureBlock>(block.mutable_data(), n, width),
+                         Eigen::Map<PointStates>(state.mutable_data(), n));
+        const auto view = [&](int column, py::ssize_t size) {
+          const py::ssize_t step = sizeof(double);
+          const double* data = block.data() + column * n;
+          return size == 1 ? py::array(block.dtype(), {n}, {step}, data, block)
+                           : py::array(block.dtype(), {n, size}, {step, n * step}, data, block);
+        };
+        namespace column = curvature_column;
+        return py::make_tuple(view(column::k1, 1), view(column::k2, 1), view(column::gaussian, 1),
+                              view(column::mean, 1), view(column::dir1, 3), view(column::dir2, 3),
+                              view(column::normal, 3), view(column::point, 3), state);
       },
       "brep"_a, "uv"_a,
       "(k1, k2, gaussian, mean, dir1, dir2, normal, points, state) at the rows (u, v) of uv on the one face of the "
-      "BRep text; convex positive as seen from the face normal; state 0 regular, 1 umbilic, 2 degenerate (a limit).");
+      "BRep text; convex positive as seen from the face normal; state 0 regular, 1 umbilic, 2 degenerate (a limit). "
+      "The arrays are views of one (16, N) block.");
   m.def(
       "edge_continuity",
       [](const std::string& brep, int samplesPerSpan, double gapTolerance, double angleTolerance,

@@ -78,14 +78,14 @@ TEST(SurfaceAnalysis, SphereIsConvexPositiveForwardAndNegativeReversed) {
   const Eigen::MatrixXd uv = grid(face, 7);
   const SurfaceCurvature c = surfaceCurvature(face, uv);
   for (Eigen::Index i = 0; i < uv.rows(); ++i) {
-    EXPECT_NEAR(c.k1[i], 1.0 / R, 1e-10 / R);
-    EXPECT_NEAR(c.k2[i], 1.0 / R, 1e-10 / R);
-    EXPECT_NEAR(c.normal.row(i).dot(c.points.row(i)) / R, 1.0, 1e-12);  // outward
+    EXPECT_NEAR(c.k1()[i], 1.0 / R, 1e-10 / R);
+    EXPECT_NEAR(c.k2()[i], 1.0 / R, 1e-10 / R);
+    EXPECT_NEAR(c.normal().row(i).dot(c.points().row(i)) / R, 1.0, 1e-12);  // outward
   }
   const SurfaceCurvature r = surfaceCurvature(TopoDS::Face(face.Reversed()), uv);
   for (Eigen::Index i = 0; i < uv.rows(); ++i) {
-    EXPECT_NEAR(r.k1[i], -1.0 / R, 1e-10 / R);
-    EXPECT_NEAR(r.normal.row(i).dot(r.points.row(i)) / R, -1.0, 1e-12);
+    EXPECT_NEAR(r.k1()[i], -1.0 / R, 1e-10 / R);
+    EXPECT_NEAR(r.normal().row(i).dot(r.points().row(i)) / R, -1.0, 1e-12);
   }
 }
 
@@ -95,10 +95,10 @@ TEST(SurfaceAnalysis, SpherePolesAreFiniteUmbilics) {
   uv << 1.0, M_PI / 2, 2.0, -M_PI / 2;
   const SurfaceCurvature c = surfaceCurvature(face, uv);
   for (int i = 0; i < 2; ++i) {
-    EXPECT_NEAR(c.k1[i], 1.0 / 3.0, 1e-9);
-    EXPECT_NEAR(c.k2[i], 1.0 / 3.0, 1e-9);
+    EXPECT_NEAR(c.k1()[i], 1.0 / 3.0, 1e-9);
+    EXPECT_NEAR(c.k2()[i], 1.0 / 3.0, 1e-9);
     EXPECT_EQ(c.state[i], static_cast<int>(PointState::Degenerate));
-    EXPECT_NEAR(std::abs(c.normal(i, 2)), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(c.normal()(i, 2)), 1.0, 1e-9);
   }
 }
 
@@ -125,10 +125,10 @@ TEST(SurfaceAnalysis, ConeApexIsRefusedNamingThePoint) {
 TEST(SurfaceAnalysis, CylinderHasInverseRadiusAcrossAndZeroAlong) {
   const TopoDS_Face face = firstFace(BRepPrimAPI_MakeCylinder(1.5, 4.0).Shape());
   const SurfaceCurvature c = surfaceCurvature(face, grid(face, 5));
-  for (Eigen::Index i = 0; i < c.k1.size(); ++i) {
-    EXPECT_NEAR(c.k1[i], 1.0 / 1.5, 1e-12);
-    EXPECT_NEAR(c.k2[i], 0.0, 1e-12);
-    EXPECT_NEAR(std::abs(c.dir2(i, 2)), 1.0, 1e-12);  // the axis
+  for (Eigen::Index i = 0; i < c.k1().size(); ++i) {
+    EXPECT_NEAR(c.k1()[i], 1.0 / 1.5, 1e-12);
+    EXPECT_NEAR(c.k2()[i], 0.0, 1e-12);
+    EXPECT_NEAR(std::abs(c.dir2()(i, 2)), 1.0, 1e-12);  // the axis
   }
 }
 
@@ -145,10 +145,10 @@ TEST(SurfaceAnalysis, BSplineMatchesGeomLPropWithTheSignConvention) {
         ASSERT_TRUE(props.IsCurvatureDefined());
         const double a = sign * props.MaxCurvature(), b = sign * props.MinCurvature();
         const double scale = std::max({std::abs(a), std::abs(b), 1e-3});
-        EXPECT_NEAR(c.k1[i], std::max(a, b), 1e-10 * scale);
-        EXPECT_NEAR(c.k2[i], std::min(a, b), 1e-10 * scale);
-        EXPECT_NEAR(c.gaussian[i], props.GaussianCurvature(), 1e-10 * scale * scale);
-        EXPECT_NEAR(c.mean[i], sign * props.MeanCurvature(), 1e-10 * scale);
+        EXPECT_NEAR(c.k1()[i], std::max(a, b), 1e-10 * scale);
+        EXPECT_NEAR(c.k2()[i], std::min(a, b), 1e-10 * scale);
+        EXPECT_NEAR(c.gaussian()[i], props.GaussianCurvature(), 1e-10 * scale * scale);
+        EXPECT_NEAR(c.mean()[i], sign * props.MeanCurvature(), 1e-10 * scale);
       }
     }
   }

@@ -218,6 +218,72 @@ def test_bad_faces_raise_input_error():
         fw.surface_curvature(Part.Shape(), [[0.5, 0.5]])
 
 
+def _multi_span_face():
+    """A bicubic rational B-spline of 10 x 10 poles, 7 x 7 knot spans on non-uniform knots."""
+    n = 10
+    poles = [[V(i, j, 0.5 * math.sin(0.9 * i) * math.cos(0.7 * j) + 0.02 * i * j) for j in range(n)]
+             for i in range(n)]
+    weights = [[1.0 + 0.3 * ((i * j) % 4) / 3 for j in range(n)] for i in range(n)]
+    knots = [0.0, 0.5, 1.5, 2.0, 3.2, 4.0, 5.5, 6.0]
+    mults = [4] + [1] * (n - 4) + [4]
+    s = Part.BSplineSurface()
+    s.buildFromPolesMultsKnots(poles, mults, mults, knots, knots, False, False, 3, 3, weights)
+    return Part.Face(s)
+
+
+@pytest.mark.parametrize("reverse", [False, True], ids=["forward", "reversed"])
+def test_results_are_views_of_one_block_and_match_occt(reverse):
+    """The arrays are views of one float64 block the kernel wrote in place (no copies: numpy's
+    memory), each of its documented shape, disjoint; and at scattered points over every span
+    their values are OCCT's: Face.curvatureAt's pair (convex negative whatever the orientation,
+    so times -1 on a forward face and +1 on a reversed one; its order differs between FreeCAD
+    versions, so sorted), Surface.curvature's Gaussian, Face.normalAt, Face.valueAt, and
+    Surface.curvatureDirections for Surface.curvature's "Max" and "Min"."""
+    face = _multi_span_face()
+    if reverse:
+        face = _reversed(face)
+    u0, u1, v0, v1 = face.ParameterRange
+    rng = np.random.default_rng(5)
+    n = 400
+    uv = np.c_[rng.uniform(u0, u1, n), rng.uniform(v0, v1, n)]
+    c = fw.surface_curvature(face, uv)
+    arrays = {"k1": (n,), "k2": (n,), "gaussian": (n,), "mean": (n,),
+              "dir1": (n, 3), "dir2": (n, 3), "normal": (n, 3), "points": (n, 3)}
+    block = c.k1.base
+    assert isinstance(block, np.ndarray) and block.dtype == np.float64 and block.size == 16 * n
+    for name, shape in arrays.items():
+        a = getattr(c, name)
+        assert a.shape == shape and a.dtype == np.float64, name
+        assert a.base is block, f"{name} is not a view of the block"
+    names = list(arrays)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            assert not np.shares_memory(getattr(c, a), getattr(c, b)), (a, b)
+    assert c.umbilic.shape == c.degenerate.shape == (n,) and c.umbilic.dtype == bool
+    sign = 1.0 if reverse else -1.0
+    for i, (u, v) in enumerate(uv):
+        k1, k2 = sorted((sign * k for k in face.curvatureAt(u, v)), reverse=True)
+        scale = max(abs(k1), abs(k2), 1e-3)
+        assert c.k1[i] == pytest.approx(k1, abs=1e-10 * scale) and c.k2[i] == pytest.approx(k2, abs=1e-10 * scale)
+        assert c.gaussian[i] == pytest.approx(face.Surface.curvature(u, v, "Gauss"), abs=1e-10 * scale ** 2)
+        assert c.mean[i] == pytest.approx((k1 + k2) / 2, abs=1e-10 * scale)
+        assert np.allclose(c.normal[i], face.normalAt(u, v), rtol=0, atol=1e-12)
+        assert np.allclose(c.points[i], face.valueAt(u, v), rtol=0, atol=1e-12)
+        if k1 - k2 > 1e-3 * scale:  # directions defined (away from umbilics), up to their sign
+            d_max, d_min = face.Surface.curvatureDirections(u, v)  # for OCCT's "Max" and "Min"
+            occt_max = sign * face.Surface.curvature(u, v, "Max")
+            d1, d2 = (d_max, d_min) if occt_max == pytest.approx(k1, abs=1e-10 * scale) else (d_min, d_max)
+            assert abs(np.dot(c.dir1[i], d1)) == pytest.approx(1.0, abs=1e-8)
+            assert abs(np.dot(c.dir2[i], d2)) == pytest.approx(1.0, abs=1e-8)
+        assert np.allclose(np.cross(c.dir1[i], c.dir2[i]), c.normal[i], atol=1e-12)
+    # uv is read in place when C-ordered; other layouts (Fortran order, every other row, every
+    # other column of a wider array) give the same values.
+    for other in (np.asfortranarray(uv), np.repeat(uv, 2, axis=0)[::2], np.repeat(uv, 2, axis=1)[:, ::2]):
+        assert not other.flags.c_contiguous
+        o = fw.surface_curvature(face, other)
+        assert np.array_equal(o.k1, c.k1) and np.array_equal(o.dir1, c.dir1) and np.array_equal(o.points, c.points)
+
+
 # ---- continuity across edges
 
 def _face_of(shape, name):

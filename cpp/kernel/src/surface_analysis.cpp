@@ -132,11 +132,12 @@ bool FaceSurface::curvature(double u, double v, SurfaceFrame& f, Principal& k) c
 Principal principalCurvatures(const SurfaceFrame& f) {
   Principal k;
   const double det = f.E * f.G - f.F * f.F;  // det I > 0 away from degenerate points
+  const double inverse = 1.0 / det;          // one division, four products
   // The shape operator's matrix W = I^-1 II = [a b; c d].
-  const double a = (f.G * f.L - f.F * f.M) / det, b = (f.G * f.M - f.F * f.N) / det;
-  const double c = (f.E * f.M - f.F * f.L) / det, d = (f.E * f.N - f.F * f.M) / det;
-  const double H = 0.5 * (a + d);                  // mean curvature, (EN - 2FM + GL) / 2 det
-  const double K = (f.L * f.N - f.M * f.M) / det;  // Gaussian curvature, det II / det I
+  const double a = (f.G * f.L - f.F * f.M) * inverse, b = (f.G * f.M - f.F * f.N) * inverse;
+  const double c = (f.E * f.M - f.F * f.L) * inverse, d = (f.E * f.N - f.F * f.M) * inverse;
+  const double H = 0.5 * (a + d);                      // mean curvature, (EN - 2FM + GL) / 2 det
+  const double K = (f.L * f.N - f.M * f.M) * inverse;  // Gaussian curvature, det II / det I
   const double half = 0.5 * (a - d);
   const double r = std::sqrt(std::max(half * half + b * c, 0.0));  // k1,2 = H +- sqrt(H^2 - K)
   // The root without cancellation first, the other from k1 k2 = K.
@@ -154,10 +155,11 @@ Principal principalCurvatures(const SurfaceFrame& f) {
   const double x0 = rowA ? x0a : x0b, x1 = rowA ? x1a : x1b;
   gp_Vec dir = f.su * x0 + f.sv * x1;
   const double scale = std::max(std::abs(k.k1), std::abs(k.k2));
-  const double dirLength = dir.Magnitude();
+  const double gap = 1e-12 * (k.k1 - k.k2);
   // Umbilic (k1 = k2 to 1e-8 of their size, a plane included): every direction is
-  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides.
-  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dirLength > 1e-12 * std::abs(k.k1 - k.k2) * std::sqrt(f.E + f.G))) {
+  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides:
+  // |dir| <= 1e-12 (k1 - k2) sqrt(E + G), compared squared (no square roots).
+  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dir.SquareMagnitude() > gap * gap * (f.E + f.G))) {
     k.state = PointState::Umbilic;
     dir = f.su.Magnitude() > 0.0 ? f.su : f.sv;
   }
@@ -191,19 +193,22 @@ std::string pointName(Eigen::Index i, double u, double v) {
 
 }  // namespace
 
-SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<const Eigen::MatrixXd>& uv) {
+void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<CurvatureBlock> values,
+                      Eigen::Ref<PointStates> state) {
   if (face.IsNull()) throw InputError("the face is null");
   if (uv.cols() != 2) throw InputError("uv must have 2 columns (u, v), got " + std::to_string(uv.cols()));
   const Eigen::Index n = uv.rows();
   if (n == 0) throw InputError("uv is empty: no points to evaluate");
-  if (const Eigen::Index i = firstNonFinite(uv); i >= 0) {
-    throw InputError("uv point " + std::to_string(i) + " is not finite");
+  if (values.rows() != n || state.rows() != n) {
+    throw InputError("the results need " + std::to_string(n) + " rows, one per uv point, got " +
+                     std::to_string(values.rows()) + " and " + std::to_string(state.rows()));
   }
   const detail::FaceSurface surface(face);
   const double wu = surface.u1 - surface.u0, wv = surface.v1 - surface.v0;
   if (!(std::isfinite(wu) && std::isfinite(wv))) throw InputError("the face is unbounded: trim it first");
   for (Eigen::Index i = 0; i < n; ++i) {
     const double u = uv(i, 0), v = uv(i, 1);
+    if (!(std::isfinite(u) && std::isfinite(v))) throw InputError("uv point " + std::to_string(i) + " is not finite");
     if (u < surface.u0 - 0.1 * wu || u > surface.u1 + 0.1 * wu || v < surface.v0 - 0.1 * wv ||
         v > surface.v1 + 0.1 * wv) {
       throw InputError(pointName(i, u, v) + " is outside the face's parameter range u in [" + exactNumber(surface.u0) +
@@ -211,46 +216,75 @@ SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<cons
                        exactNumber(surface.v1) + "] by more than 10%");
     }
   }
-  SurfaceCurvature out;
-  out.k1.resize(n);
-  out.k2.resize(n);
-  out.gaussian.resize(n);
-  out.mean.resize(n);
-  out.dir1.resize(n, 3);
-  out.dir2.resize(n, 3);
-  out.normal.resize(n, 3);
-  out.points.resize(n, 3);
-  out.state.resize(n);
-  detail::SurfaceFrame f;
+  namespace column = curvature_column;
   detail::Principal k;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double u = uv(i, 0), v = uv(i, 1);
-    bool defined = false;
+  // Each point's 16 values go straight into the caller's block, one column each.
+  const auto put = [&values](Eigen::Index i, int c, const gp_XYZ& x) {
+    values(i, c) = x.X();
+    values(i, c + 1) = x.Y();
+    values(i, c + 2) = x.Z();
+  };
+  // OCCT throws where a surface cannot be evaluated (an offset surface past its validity).
+  const auto guarded = [&uv](Eigen::Index i, auto&& evaluate) {
     try {
-      defined = surface.curvature(u, v, f, k);
+      return evaluate();
     } catch (const Standard_Failure& e) {
-      throw InputError("the surface cannot be evaluated at " + pointName(i, u, v) + " (" + e.GetMessageString() + ")");
+      throw InputError("the surface cannot be evaluated at " + pointName(i, uv(i, 0), uv(i, 1)) + " (" +
+                       e.GetMessageString() + ")");
     }
-    if (!defined) {
-      throw InputError("the curvature is not defined at " + pointName(i, u, v) +
-                       ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
-                       "without bound towards it");
+  };
+  // In batches: the frames of a few points, then their curvatures. Both are chains of square
+  // roots and divisions; the points of a batch are independent, and in these shorter loops the
+  // processor overlaps their chains (one point's whole evaluation is too long for it to reach
+  // the next point's).
+  constexpr Eigen::Index kBatch = 8;
+  detail::SurfaceFrame frames[kBatch];
+  bool regular[kBatch];
+  for (Eigen::Index i0 = 0; i0 < n; i0 += kBatch) {
+    const Eigen::Index m = std::min(kBatch, n - i0);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const Eigen::Index i = i0 + j;
+      regular[j] = guarded(i, [&] { return surface.frame(uv(i, 0), uv(i, 1), frames[j]); });
     }
-    out.k1[i] = k.k1;
-    out.k2[i] = k.k2;
-    out.gaussian[i] = k.k1 * k.k2;
-    out.mean[i] = 0.5 * (k.k1 + k.k2);
-    out.dir1.row(i) << k.dir1.X(), k.dir1.Y(), k.dir1.Z();
-    out.dir2.row(i) << k.dir2.X(), k.dir2.Y(), k.dir2.Z();
-    out.normal.row(i) << f.n.X(), f.n.Y(), f.n.Z();
-    out.points.row(i) << f.p.X(), f.p.Y(), f.p.Z();
-    out.state[i] = static_cast<int>(k.state);
-    if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(out.gaussian[i]))) {
-      throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const Eigen::Index i = i0 + j;
+      const double u = uv(i, 0), v = uv(i, 1);
+      detail::SurfaceFrame& f = frames[j];
+      if (regular[j]) {
+        k = detail::principalCurvatures(f);
+      } else if (!guarded(i, [&] { return surface.curvature(u, v, f, k); })) {  // the limit at a degenerate point
+        throw InputError("the curvature is not defined at " + pointName(i, u, v) +
+                         ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
+                         "without bound towards it");
+      }
+      const double K = k.k1 * k.k2;
+      if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(K))) {
+        throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
+      }
+      // Unit vectors: their sum is finite exactly when each coordinate is.
+      if (!std::isfinite(k.dir1.X() + k.dir1.Y() + k.dir1.Z() + f.n.X() + f.n.Y() + f.n.Z())) {
+        throw InputError("the principal directions or the normal at " + pointName(i, u, v) +
+                         " are not finite: the surface is too large, too small or too close to singular there for "
+                         "double precision");
+      }
+      values(i, column::k1) = k.k1;
+      values(i, column::k2) = k.k2;
+      values(i, column::gaussian) = K;
+      values(i, column::mean) = 0.5 * (k.k1 + k.k2);
+      put(i, column::dir1, k.dir1.XYZ());
+      put(i, column::dir2, k.dir2.XYZ());
+      put(i, column::normal, f.n.XYZ());
+      put(i, column::point, f.p.XYZ());
+      state[i] = static_cast<std::int8_t>(k.state);
     }
   }
-  requireFinite(out.dir1, "the principal directions", "rows");
-  requireFinite(out.normal, "the normals", "rows");
+}
+
+SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv) {
+  SurfaceCurvature out;
+  out.values.resize(uv.rows(), Eigen::NoChange);
+  out.state.resize(uv.rows());
+  surfaceCurvature(face, uv, out.values, out.state);
   return out;
 }
 

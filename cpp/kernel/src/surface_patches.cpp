@@ -21,6 +21,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace fairsplines::detail {
 
@@ -41,9 +42,18 @@ Eigen::MatrixXd bernsteinToPower(int n) {
 }
 
 /// The span of a sorted breakpoint list holding x: [0, spans - 1], the end spans beyond.
+/// It counts the inner breakpoints <= x by a binary search whose steps are selects, not
+/// branches: on scattered points a branch would be mispredicted at every other step.
 int spanOf(const std::vector<double>& breaks, double x) {
-  const auto inner = std::upper_bound(breaks.begin() + 1, breaks.end() - 1, x);
-  return static_cast<int>(inner - (breaks.begin() + 1));
+  const double* const inner = breaks.data() + 1;
+  const double* b = inner;
+  std::size_t count = breaks.size() - 2;  // the answer lies in [b - inner, b - inner + count]
+  while (count > 1) {
+    const std::size_t half = count / 2;
+    b = b[half - 1] <= x ? b + half : b;
+    count -= half;
+  }
+  return static_cast<int>(b - inner) + (count == 1 && b[0] <= x ? 1 : 0);
 }
 
 /// x moved by whole periods into [first, first + period), for a periodic direction.
@@ -54,6 +64,40 @@ double wrap(double x, double first, double period) {
 }
 
 gp_Vec vec(const Eigen::Vector3d& x) { return gp_Vec(x.x(), x.y(), x.z()); }
+
+/// The homogeneous point A(s, t) and its first and second derivatives in s and t.
+struct HomogeneousD2 {
+  Eigen::Vector4d A, As, At, Ass, Ast, Att;
+};
+
+/// HomogeneousD2 of one span's (p + 1) x (q + 1) power coefficients a_kl at (s, t): Horner in s
+/// over the rows' values r_k(t), r_k'(t) and half r_k''(t), each by Horner in t
+/// (d2 = d2 t + d1, d1 = d1 t + x, x = x t + c). P, Q > 0: the degrees, known when compiling
+/// (the bicubic case: loops of fixed length, unrolled); 0: p and q as given.
+template <int P, int Q>
+HomogeneousD2 horner(const Eigen::Vector4d* a, int p, int q, double s, double t) {
+  if constexpr (P > 0) p = P;
+  if constexpr (Q > 0) q = Q;
+  HomogeneousD2 h;
+  h.A = h.As = h.Ass = h.At = h.Ast = h.Att = Eigen::Vector4d::Zero();
+  for (int k = p; k >= 0; --k) {
+    const Eigen::Vector4d* row = a + k * (q + 1);
+    Eigen::Vector4d r = row[q], r1 = Eigen::Vector4d::Zero(), r2 = Eigen::Vector4d::Zero();
+    for (int l = q - 1; l >= 0; --l) {
+      r2 = r2 * t + r1;
+      r1 = r1 * t + r;
+      r = r * t + row[l];
+    }
+    h.Ass = h.Ass * s + h.As;
+    h.As = h.As * s + h.A;
+    h.A = h.A * s + r;
+    h.Ast = h.Ast * s + h.At;
+    h.At = h.At * s + r1;
+    h.Att = h.Att * s + 2.0 * r2;
+  }
+  h.Ass *= 2.0;
+  return h;
+}
 
 }  // namespace
 
@@ -94,6 +138,8 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
   convert.VKnots(vKnots);
   for (int i = 1; i <= nu + 1; ++i) out->uBreaks_.push_back(uKnots(i));
   for (int j = 1; j <= nv + 1; ++j) out->vBreaks_.push_back(vKnots(j));
+  for (int i = 0; i < nu; ++i) out->uScale_.push_back(1.0 / (out->uBreaks_[i + 1] - out->uBreaks_[i]));
+  for (int j = 0; j < nv; ++j) out->vScale_.push_back(1.0 / (out->vBreaks_[j + 1] - out->vBreaks_[j]));
 
   const int p = out->p_, q = out->q_;
   const Eigen::MatrixXd mu = bernsteinToPower(p), mv = bernsteinToPower(q);
@@ -125,43 +171,26 @@ void PowerPatches::d2(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv, gp_
   u = wrap(u, uFirst_, uPeriod_);
   v = wrap(v, vFirst_, vPeriod_);
   const int i = spanOf(uBreaks_, u), j = spanOf(vBreaks_, v);
-  const double hu = uBreaks_[i + 1] - uBreaks_[i], hv = vBreaks_[j + 1] - vBreaks_[j];
-  const double s = (u - uBreaks_[i]) / hu, t = (v - vBreaks_[j]) / hv;
+  const double dsdu = uScale_[i], dtdv = vScale_[j];  // 1 / the span's widths: ds/du, dt/dv
+  const double s = (u - uBreaks_[i]) * dsdu, t = (v - vBreaks_[j]) * dtdv;
   const int nv = static_cast<int>(vBreaks_.size()) - 1;
   const Eigen::Vector4d* a = &a_[(static_cast<std::size_t>(i) * nv + j) * (p_ + 1) * (q_ + 1)];
 
-  // Horner in s over the rows' values r_k(t), r_k'(t), r_k''(t), each by Horner in t
-  // (value, first and half the second derivative: d2 = d2 t + d1, d1 = d1 t + x, x = x t + c).
-  Eigen::Vector4d A = Eigen::Vector4d::Zero(), As = A, Ass = A, At = A, Ast = A, Att = A;
-  for (int k = p_; k >= 0; --k) {
-    const Eigen::Vector4d* row = a + k * (q_ + 1);
-    Eigen::Vector4d r = row[q_], r1 = Eigen::Vector4d::Zero(), r2 = Eigen::Vector4d::Zero();
-    for (int l = q_ - 1; l >= 0; --l) {
-      r2 = r2 * t + r1;
-      r1 = r1 * t + r;
-      r = r * t + row[l];
-    }
-    Ass = Ass * s + As;
-    As = As * s + A;
-    A = A * s + r;
-    Ast = Ast * s + At;
-    At = At * s + r1;
-    Att = Att * s + 2.0 * r2;
-  }
-  Ass *= 2.0;
-  // To (u, v): d/du = (1 / hu) d/ds.
-  As /= hu;
-  Ass /= hu * hu;
-  At /= hv;
-  Att /= hv * hv;
-  Ast /= hu * hv;
-  const double w = A[3];
-  const Eigen::Vector3d S = A.head<3>() / w;
-  const Eigen::Vector3d Su = (As.head<3>() - As[3] * S) / w;
-  const Eigen::Vector3d Sv = (At.head<3>() - At[3] * S) / w;
-  const Eigen::Vector3d Suu = (Ass.head<3>() - 2.0 * As[3] * Su - Ass[3] * S) / w;
-  const Eigen::Vector3d Svv = (Att.head<3>() - 2.0 * At[3] * Sv - Att[3] * S) / w;
-  const Eigen::Vector3d Suv = (Ast.head<3>() - As[3] * Sv - At[3] * Su - Ast[3] * S) / w;
+  HomogeneousD2 h = p_ == 3 && q_ == 3 ? horner<3, 3>(a, p_, q_, s, t) : horner<0, 0>(a, p_, q_, s, t);
+  Eigen::Vector4d &A = h.A, &As = h.As, &At = h.At, &Ass = h.Ass, &Ast = h.Ast, &Att = h.Att;
+  // To (u, v): d/du = (ds/du) d/ds.
+  As *= dsdu;
+  Ass *= dsdu * dsdu;
+  At *= dtdv;
+  Att *= dtdv * dtdv;
+  Ast *= dsdu * dtdv;
+  const double wInverse = 1.0 / A[3];  // one division; the quotient rule multiplies by 1 / w
+  const Eigen::Vector3d S = A.head<3>() * wInverse;
+  const Eigen::Vector3d Su = (As.head<3>() - As[3] * S) * wInverse;
+  const Eigen::Vector3d Sv = (At.head<3>() - At[3] * S) * wInverse;
+  const Eigen::Vector3d Suu = (Ass.head<3>() - 2.0 * As[3] * Su - Ass[3] * S) * wInverse;
+  const Eigen::Vector3d Svv = (Att.head<3>() - 2.0 * At[3] * Sv - Att[3] * S) * wInverse;
+  const Eigen::Vector3d Suv = (Ast.head<3>() - As[3] * Sv - At[3] * Su - Ast[3] * S) * wInverse;
   p.SetCoord(S.x(), S.y(), S.z());
   su = vec(Su);
   sv = vec(Sv);

@@ -33,6 +33,7 @@ private:
   double uPeriod_ = 0.0, vPeriod_ = 0.0;  ///< periods of periodic directions (0: not periodic)
   std::vector<double> uBreaks_;           ///< distinct knots in u (spans + 1)
   std::vector<double> vBreaks_;           ///< distinct knots in v
+  std::vector<double> uScale_, vScale_;   ///< 1 / each span's width (multiplied, not divided, per point)
   std::vector<Eigen::Vector4d> a_;        ///< per span (u-major), (p + 1) x (q + 1) homogeneous power coefficients a_kl
 };
 

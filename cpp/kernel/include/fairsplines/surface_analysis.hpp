@@ -10,8 +10,11 @@
 #include <Eigen/Core>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <cstdint>
 #include <string>
 #include <vector>
+
+#include "fairsplines/types.hpp"
 
 namespace fairsplines {
 
@@ -30,29 +33,54 @@ enum class PointState : int {
   Degenerate = 2,  ///< Su x Sv vanishes (a sphere's pole): the limit from inside the face
 };
 
-/// n x 3 rows (row-major: numpy's layout).
-using Rows3d = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+/// The columns of surfaceCurvature's block: one column per scalar quantity, three per vector
+/// (x, y, z), one row per point.
+namespace curvature_column {
+constexpr int k1 = 0, k2 = 1, gaussian = 2, mean = 3;  ///< principal, Gaussian and mean curvatures
+constexpr int dir1 = 4, dir2 = 7;                      ///< unit principal directions; dir1 x dir2 = normal
+constexpr int normal = 10;                             ///< unit face normal (Face.normalAt's)
+constexpr int point = 13;                              ///< the surface point
+constexpr int count = 16;
+}  // namespace curvature_column
+
+/// n x 16 values, column-major: each quantity's n values contiguous, a vector quantity's
+/// three columns one after the other (numpy's C-ordered (16, n) array, whose rows are then the
+/// quantities and whose (3, n) slices, transposed, the (n, 3) vectors).
+using CurvatureBlock = Eigen::Matrix<double, Eigen::Dynamic, curvature_column::count>;
+/// PointState per point.
+using PointStates = Eigen::Matrix<std::int8_t, Eigen::Dynamic, 1>;
 
 /// Principal curvatures at n points of one face, in the face's sign convention.
 struct SurfaceCurvature {
-  Eigen::VectorXd k1, k2;       ///< principal curvatures, k1 >= k2
-  Eigen::VectorXd gaussian;     ///< K = k1 k2
-  Eigen::VectorXd mean;         ///< H = (k1 + k2) / 2
-  Eigen::MatrixX3d dir1, dir2;  ///< unit principal directions; dir1 x dir2 = normal
-  Eigen::MatrixX3d normal;      ///< unit face normal (Face.normalAt's)
-  Eigen::MatrixX3d points;      ///< the surface points
-  Eigen::VectorXi state;        ///< PointState per point
+  CurvatureBlock values;  ///< n x 16 (curvature_column)
+  PointStates state;      ///< PointState per point
+
+  auto k1() const { return values.col(curvature_column::k1); }  ///< k1 >= k2
+  auto k2() const { return values.col(curvature_column::k2); }
+  auto gaussian() const { return values.col(curvature_column::gaussian); }  ///< K = k1 k2
+  auto mean() const { return values.col(curvature_column::mean); }          ///< H = (k1 + k2) / 2
+  auto dir1() const { return values.middleCols<3>(curvature_column::dir1); }
+  auto dir2() const { return values.middleCols<3>(curvature_column::dir2); }
+  auto normal() const { return values.middleCols<3>(curvature_column::normal); }
+  auto points() const { return values.middleCols<3>(curvature_column::point); }
 };
 
 /// Principal curvatures, directions and normal at the rows (u, v) of uv on the face's
 /// surface (any OCCT surface: plane, analytic, Bezier, B-spline, rational, offset,
-/// extrusion, revolution; the face's location and orientation applied).
+/// extrusion, revolution; the face's location and orientation applied), written into
+/// `values` (uv.rows() x 16, see curvature_column) and `state` (uv.rows()): memory the caller
+/// owns, such as one numpy array (the binding), so that the results are not copied.
 /// At a degenerate point (Su x Sv = 0: a sphere's pole) the values are the limit taken from
 /// inside the face; where that limit does not exist (a cone's apex) it throws.
 /// Throws InputError if uv is not n x 2, has a NaN or infinite entry, lies outside the
 /// face's parameter range by more than 10% of it, if the surface cannot be evaluated there
-/// or its curvature is infinite (each naming the point, from 0), or if the face is null.
-SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const Eigen::Ref<const Eigen::MatrixXd>& uv);
+/// or its curvature is infinite (each naming the point, from 0), if the face is null, or if
+/// values or state do not have uv.rows() rows (then nothing is written).
+void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<CurvatureBlock> values,
+                      Eigen::Ref<PointStates> state);
+
+/// The same into a SurfaceCurvature of its own.
+SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv);
 
 /// Tolerances of the continuity verdict (docs/SURFACE_ANALYSIS.md).
 struct ContinuityOptions {
