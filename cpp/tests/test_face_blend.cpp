@@ -107,9 +107,9 @@ TEST(FaceBlend, HoledPlane_FittedG2AlongTheWholeCircle) {
   // fitted; the blend rises from it into a narrower cylinder above.
   BRepBuilderAPI_MakeFace maker(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0.0, 2.0, -1.0, 1.0);
   const TopoDS_Edge circle = BRepBuilderAPI_MakeEdge(gp_Circ(gp_Ax2(gp_Pnt(1, 0, 0), gp_Dir(0, 0, 1)), 0.5));
-  TopoDS_Wire hole = BRepBuilderAPI_MakeWire(circle).Wire();
-  hole.Reverse();
-  maker.Add(hole);
+  TopoDS_Wire inner = BRepBuilderAPI_MakeWire(circle).Wire();
+  inner.Reverse();
+  maker.Add(inner);
   const TopoDS_Face holed = maker.Face();
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(holed, TopAbs_EDGE, edges);

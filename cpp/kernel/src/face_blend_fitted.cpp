@@ -16,12 +16,13 @@
 // approximation); knots go where the data loses smoothness (the pcurve's knots, the surface's knot
 // lines crossed), of the multiplicity that lets the fit follow it. The fit is judged against the
 // face at points between the samples (position, normal, normal curvature along, across and at 45
-// degrees: the quantities at a tenth of its tolerances), and the failing spans are halved
-// and the data fitted again, until they hold or the budget (kMaxSpans spans, kMaxRounds rounds) is
-// spent. The side leaves as a B-spline surface of v-degree 2 whose three rows of poles are the
-// poles of C, C + T/2 and C + T + K/2 (v-knots 0, 0, 0, 1, 1, 1): the exact route's boundaryRows
-// then reads back r0 = C, d1 = T, d2 = K, and the rest of the blend is built as for exact sides.
-#include <BRepClass_FaceClassifier.hxx>
+// degrees: the quantities, aiming at a tenth of its tolerances), and the failing spans are
+// halved (and their long neighbours: a graded knot vector) and the data fitted again, until the
+// aim holds, or the spans reach kMinSpan and the tolerances themselves hold, or the budget
+// (kMaxSpans spans, kMaxRounds rounds) is spent: then InputError names the edge. The side leaves
+// as a B-spline surface of v-degree 2 whose three rows of poles are the poles of C, C + T/2 and
+// C + T + K/2 (v-knots 0, 0, 0, 1, 1, 1): the exact route's boundaryRows then reads back r0 = C,
+// d1 = T, d2 = K, and the rest of the blend is built as for exact sides.
 #include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
