@@ -131,6 +131,13 @@ TEST(FaceBlend, HoledPlane_FittedG2AlongTheWholeCircle) {
     EXPECT_LT(e[2], 1e-4 / (0.3 * 0.3));
     EXPECT_LT(e[3], 1e-4 / 0.3);
   }
+  // On the plane is not enough: the blend's boundary runs along the hole's circle.
+  double offCircle = 0.0;
+  for (int i = 0; i <= 100; ++i) {
+    const gp_Pnt p = blend.surface->Value(i / 100.0, 0.0);
+    offCircle = std::max(offCircle, std::abs(std::hypot(p.X() - 1.0, p.Y()) - 0.5));
+  }
+  EXPECT_LT(offCircle, 1e-7 * blend.size);
 }
 
 TEST(FaceBlend, BadInput_NamesTheProblem) {
