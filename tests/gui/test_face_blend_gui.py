@@ -338,11 +338,9 @@ def test_a_trimmed_edge_is_fitted_and_the_panel_says_so(scene, artifacts):
     """A plane with a hole cut by Part's boolean (its circle is no isoline) picked with the command:
     the blend is made by the fitted route, the panel reports that side "fitted" with its spans, and
     OCCT finds the tolerances along the whole circle."""
-    import os
-
     import Part
 
-    from test_panels import assert_fits
+    from test_panels import assert_fits, picture
 
     doc, a, b = scene
     plane = Part.makePlane(5, 5, V(-2.5, -2.5, 3.5))
@@ -361,7 +359,6 @@ def test_a_trimmed_edge_is_fitted_and_the_panel_says_so(scene, artifacts):
     measured = fw.blend_errors(surface, holed.Shape.Faces[0], holed.Shape.getElement(circle), 1.0)
     assert measured["within"] and measured["curvature_jump"] <= 1e-4, measured
     assert_fits(panel, "Face blend panel (fitted side)")
-    gui().updateGui()
-    gui().getMainWindow().grab().save(os.path.join(artifacts, "face_blend_fitted_main_window.png"))
+    picture(panel, "face_blend_fitted", artifacts)
     panel.reject()
     gui().updateGui()
