@@ -5,6 +5,9 @@ face along the whole edge: in position and normal (G1), and in normal curvature 
 direction (G2). Where the edge is an isoparametric boundary of a B-spline, Bezier or analytic
 face (or a straight edge of a plane), the match is exact to rounding: the kernel takes the
 cross-boundary derivatives from the face's homogeneous poles (cpp/kernel/src/face_blend.cpp).
+Elsewhere (trimmed edges, seams, other surfaces) the face is sampled along the edge and its
+position, normal and normal curvature fitted until the tolerances hold between the samples
+(cpp/kernel/src/face_blend_fitted.cpp); the report says which way each side was done.
 The free magnitudes of the derivatives are chosen for fair cross sections (fewest curvature
 extrema, then least variation), and the report gives the errors as OCCT measures them on the
 returned surface (``blend_errors``).
@@ -34,10 +37,13 @@ REFEREE_SAMPLES = 101
 FaceBlendReport = namedtuple("FaceBlendReport", "sides sections errors valid evaluations size")
 FaceBlendReport.__module__ = "freecad_workbench"
 FaceBlendReport.__doc__ = (
-    "The report of blend_faces: sides (two dicts, a then b: method 'exact', surface_type, isoparametric 'u', 'v' "
-    "or 'line', alpha and beta of v(s) = v0 - alpha s + beta s^2 / 2, scale = alpha over the default magnitude, "
-    "bend = beta / alpha, rational, closed, continuity 1 or 2); sections (one dict per cross section: u in [0, 1], monotone "
-    "(certified), curvature_extrema (certificate), sampled_extrema, kappa_min, kappa_max, variation, reason); "
+    "The report of blend_faces: sides (two dicts, a then b: method 'exact' or 'fitted', reason (why fitted), "
+    "surface_type, isoparametric 'u', 'v', 'line' or 'none' (fitted), alpha and beta of "
+    "v(s) = v0 - alpha s + beta s^2 / 2, scale = alpha over the default magnitude, bend = beta / alpha, rational, "
+    "closed, continuity 1 or 2; fitted sides also spans, refinements, samples and the fit's worst fit_gap (of both edges' box), "
+    "fit_angle (degrees), fit_curvature (of the curvature scale) between its samples); sections (one dict per "
+    "cross section: u in [0, 1], monotone (certified), curvature_extrema (certificate), sampled_extrema, "
+    "kappa_min, kappa_max, variation, reason); "
     "errors (two dicts from blend_errors, a then b, or None when measure=False); valid (BRepCheck of the blend's "
     "face); evaluations (candidates judged by the fairness search); size (diagonal of the blend's pole box)."
 )
@@ -152,9 +158,9 @@ def blend_faces(face_a: Any, edge_a: Any, face_b: Any, edge_b: Any, continuity: 
     scale_a, scale_b > 0 fix the cross-boundary derivative magnitudes as multiples of the default
     (mean chord over mean cross-boundary speed); None: chosen for fair sections. measure=False
     skips the OCCT referee of the report (errors None).
-    Raises InputError naming the problem: an edge not on its face, a degenerate edge, an edge that
-    is not an isoparametric boundary (trimmed edges, seams: fitted blends are not implemented),
-    faces that touch, a blend that would cross itself, or a result BRepCheck calls invalid."""
+    Raises InputError naming the problem: an edge not on its face, a degenerate edge, a fitted
+    edge (not an isoparametric boundary: trimmed, a seam) whose fit spends its budget, faces that
+    touch, a blend that would cross itself, or a result BRepCheck calls invalid."""
     ka, kb = _continuities(continuity)
     flip = as_flag(flip, "flip")
     measure = as_flag(measure, "measure")

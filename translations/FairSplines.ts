@@ -1347,6 +1347,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>fitted ({} spans)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../fairsplines_setup/dialog.py"/>
         <source>found: {name}</source>
         <translation type="unfinished"></translation>

@@ -28,6 +28,15 @@ py::dict sideDict(const FaceBlendSide& s) {
   d["rational"] = s.rational;
   d["closed"] = s.closed;
   d["continuity"] = s.continuity;
+  d["reason"] = s.reason;
+  if (s.method == "fitted") {
+    d["spans"] = s.spans;
+    d["refinements"] = s.refinements;
+    d["samples"] = s.samples;
+    d["fit_gap"] = s.fitGap;
+    d["fit_angle"] = s.fitAngle;
+    d["fit_curvature"] = s.fitCurvature;
+  }
   return d;
 }
 

@@ -332,3 +332,33 @@ def test_command_on_the_edges_of_two_b_spline_sheets_takes_their_only_faces(scen
     for face, edge, s in ((floor, edge_f, 0.0), (wall, edge_w, 1.0)):
         e = fw.blend_errors(surface, face.Shape.Faces[0], face.Shape.getElement(edge), s)
         assert e["gap"] < 1e-7 and e["angle"] < 1e-4 and e["curvature_jump"] < 1e-4, e
+
+
+def test_a_trimmed_edge_is_fitted_and_the_panel_says_so(scene, artifacts):
+    """A plane with a hole cut by Part's boolean (its circle is no isoline) picked with the command:
+    the blend is made by the fitted route, the panel reports that side "fitted" with its spans, and
+    OCCT finds the tolerances along the whole circle."""
+    import Part
+
+    from test_panels import assert_fits, picture
+
+    doc, a, b = scene
+    plane = Part.makePlane(5, 5, V(-2.5, -2.5, 3.5))
+    holed = doc.addObject("Part::Feature", "Holed")
+    holed.Shape = plane.cut(Part.Face(Part.Wire(Part.makeCircle(1.8, V(0, 0, 3.5)))))
+    doc.recompute()
+    circle = next(f"Edge{i + 1}" for i, e in enumerate(holed.Shape.Edges) if e.Curve.__class__.__name__ == "Circle")
+    select((b, lateral(b)), (b, rim_edge(b, 3.0)), (holed, "Face1"), (holed, circle))
+    before = {o.Name for o in doc.Objects}
+    run(NAME)
+    blend = next(o for o in doc.Objects if o.Name not in before)
+    panel = panel_of(blend)
+    text = panel.report.text()
+    assert "Side A: exact" in text and "Side B: fitted (" in text, text
+    surface = blend.Shape.Faces[0].Surface
+    measured = fw.blend_errors(surface, holed.Shape.Faces[0], holed.Shape.getElement(circle), 1.0)
+    assert measured["within"] and measured["curvature_jump"] <= 1e-4, measured
+    assert_fits(panel, "Face blend panel (fitted side)")
+    picture(panel, "face_blend_fitted", artifacts)
+    panel.reject()
+    gui().updateGui()

@@ -1,6 +1,10 @@
 // G1 and G2 blends between two faces (issue 29; docs/FACE_BLENDS.md).
 //
-// Method: each edge must be an isoparametric boundary v = v0 of its face. The face's surface is
+// Method: an edge that is an isoparametric boundary v = v0 of its face is taken exactly (below);
+// any other edge (trimmed, a seam, an isoline inside the face, a surface without an exact B-spline
+// form) is fitted: face_blend_fitted.cpp samples the face along it and fits its boundary rows
+// until the tolerances hold, and returns them as a surface of v-degree 2 that enters here as an
+// exact side would. The face's surface is
 // converted exactly to a (rational) B-spline (GeomConvert), cut to the face's side with the full
 // multiplicity of v0, so the first three rows of homogeneous poles Q_0, Q_1, Q_2 give the
 // position, first and second cross-boundary derivative exactly (Piegl & Tiller, The NURBS Book,
@@ -18,6 +22,7 @@
 #include "fairsplines/face_blend.hpp"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <BSplCLib.hxx>
@@ -42,6 +47,7 @@
 #include <cmath>
 #include <limits>
 #include <math_Matrix.hxx>
+#include <optional>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/monotone.hpp"
@@ -59,8 +65,10 @@ using namespace face_blend_detail;
 // One side: the face's surface as a B-spline, u along the edge, the face at v >= v0
 
 struct Side {
-  Handle(Geom_BSplineSurface) surface;
+  Handle(Geom_BSplineSurface) surface;  // made after both sides are read when `fitted` is set
   FaceBlendSide report;
+  std::optional<FittedEdge> fitted;  // the edge is fitted (face_blend_fitted.cpp), not taken exactly
+  std::vector<Vec3> rim;             // 17 points of the edge's covered part (the fit's size)
 };
 
 std::string surfaceName(const Handle(Geom_Surface)& s) {
@@ -91,9 +99,60 @@ std::pair<double, double> extentAcross(const TopoDS_Face& face, const gp_Pnt& or
   return {lo, hi};
 }
 
+/// The fitted route for an edge that is not an isoparametric boundary (`reason` says why): the
+/// face's surface and the edge's pcurve with the orientation it has in the face, so the face
+/// lies left of it in the parameter plane (right for a reversed edge), checked by OCCT's
+/// classifier beside the edge's middle.
+Side fittedSide(const TopoDS_Face& face, const TopoDS_Edge& edge, const std::string& name, const std::string& reason,
+                const FaceBlendOptions& o) {
+  const TopoDS_Face forward = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  TopoDS_Edge oriented = edge;
+  for (TopExp_Explorer x(forward, TopAbs_EDGE); x.More(); x.Next())
+    if (x.Current().IsSame(edge)) {
+      oriented = TopoDS::Edge(x.Current());
+      break;
+    }
+  Side side;
+  FittedEdge& e = side.fitted.emplace();
+  e.edgeName = "edge_" + name;
+  e.faceName = "face_" + name;
+  double f = 0.0, l = 0.0;
+  e.pcurve = BRep_Tool::CurveOnSurface(oriented, forward, f, l);
+  e.surface = BRep_Tool::Surface(forward);
+  if (e.pcurve.IsNull() || e.surface.IsNull())
+    throw InputError(e.edgeName + " is not an edge of " + e.faceName + " (no curve on its surface)");
+  e.from = f + o.start * (l - f);
+  e.to = f + o.end * (l - f);
+  e.inward = oriented.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0;
+  double umin, umax, vmin, vmax;
+  BRepTools::UVBounds(forward, umin, umax, vmin, vmax);
+  gp_Pnt2d mid;
+  gp_Vec2d d;
+  e.pcurve->D1(0.5 * (f + l), mid, d);
+  if (d.Magnitude() > 0) {
+    const gp_Vec2d left = gp_Vec2d(-d.Y(), d.X()).Normalized() * (1e-3 * std::hypot(umax - umin, vmax - vmin));
+    const double tol = BRep_Tool::Tolerance(edge);
+    const TopAbs_State inside = BRepClass_FaceClassifier(forward, mid.Translated(e.inward * left), tol).State();
+    const TopAbs_State outside = BRepClass_FaceClassifier(forward, mid.Translated(-e.inward * left), tol).State();
+    if (inside == TopAbs_OUT && outside == TopAbs_IN) e.inward = -e.inward;
+  }
+  Handle(Geom_Surface) basis = e.surface;
+  const Handle(Geom_RectangularTrimmedSurface) trimmed = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis);
+  if (!trimmed.IsNull()) basis = trimmed->BasisSurface();
+  side.report.method = "fitted";
+  side.report.reason = reason;
+  side.report.surfaceType = surfaceName(basis);
+  side.report.isoparametric = "none";
+  BRepAdaptor_Curve c(edge);
+  const double length = GCPnts_AbscissaPoint::Length(c);
+  side.report.closed = o.start == 0.0 && o.end == 1.0 &&
+                       c.Value(c.FirstParameter()).Distance(c.Value(c.LastParameter())) <= 1e-9 * length;
+  return side;
+}
+
 /// Side of `face` along its edge number `index`: the exact B-spline of the face near the edge,
 /// u along the edge (its parameter's direction) over [start, end] of it, v into the face.
-Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, const FaceBlendOptions& o) {
+Side readSide(const TopoDS_Face& face, int index, const std::string& name, const FaceBlendOptions& o) {
   const std::string faceName = "face_" + name, edgeName = "edge_" + name;
   TopTools_IndexedMapOfShape edges;
   TopExp::MapShapes(face, TopAbs_EDGE, edges);
@@ -102,9 +161,6 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
                      std::to_string(edges.Extent()) + " edges");
   const TopoDS_Edge edge = TopoDS::Edge(edges(index));
   if (BRep_Tool::Degenerated(edge)) throw InputError(edgeName + " is degenerate (a point of " + faceName + ")");
-  if (BRep_Tool::IsClosed(edge, face))
-    throw InputError(edgeName + " is a seam of " + faceName +
-                     " (the face lies on both sides of it), not its boundary: fitted blends are not implemented");
   BRepAdaptor_Curve curve3d(edge);
   const double length = GCPnts_AbscissaPoint::Length(curve3d);
   Handle(Geom_Surface) base = BRep_Tool::Surface(face);
@@ -114,6 +170,8 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   const double extent = std::max(umax - umin, vmax - vmin);
   if (!(length > 1e-12 * std::max(1.0, extent)))
     throw InputError(edgeName + " is degenerate (length " + num(length) + ")");
+  if (BRep_Tool::IsClosed(edge, face))
+    return fittedSide(face, edge, name, "a seam of " + faceName + " (the face lies on both sides of it)", o);
   Side side;
   Handle(Geom_Surface) basis = base;
   const Handle(Geom_RectangularTrimmedSurface) trimmedBase = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis);
@@ -122,9 +180,7 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   if (!trimmedBase.IsNull()) basis = trimmedBase->BasisSurface(), base = basis;
   side.report.surfaceType = surfaceName(basis);
   if (!exactlyConverted(side.report.surfaceType))
-    throw InputError(faceName + " is a " + side.report.surfaceType +
-                     ": only B-spline, Bezier, planar and analytic faces are blended exactly (fitted blends are "
-                     "not implemented)");
+    return fittedSide(face, edge, name, faceName + " is a " + side.report.surfaceType + " (no exact B-spline form)", o);
 
   double f = 0.0, l = 0.0;
   Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(edge, face, f, l);
@@ -149,8 +205,7 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
       v0 = hi;
       vOther = lo;
     } else {
-      throw InputError(edgeName + " is an isoparametric line inside " + faceName +
-                       " (a seam?), not its boundary: fitted blends are not implemented");
+      return fittedSide(face, edge, name, "an isoparametric line inside " + faceName + ", not its boundary", o);
     }
     first = alongU ? a.X() : a.Y();
     last = alongU ? b.X() : b.Y();
@@ -161,8 +216,7 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
     const gp_Pnt pm = curve3d.Value(0.5 * (curve3d.FirstParameter() + curve3d.LastParameter()));
     const gp_Vec chord(p0, p1);
     if (chord.Magnitude() < 1e-12 || gp_Vec(p0, pm).Crossed(chord).Magnitude() > 1e-9 * chord.SquareMagnitude())
-      throw InputError(edgeName + " is a curved edge of the plane " + faceName +
-                       ": trimmed edges are not supported (fitted blends are not implemented)");
+      return fittedSide(face, edge, name, "a curved edge of the plane " + faceName, o);
     const gp_Dir z = plane->Position().Direction(), x(chord);
     const gp_Dir y = z.Crossed(x);
     base = new Geom_Plane(gp_Ax3(p0, z, x));
@@ -181,8 +235,7 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
     first = 0.0;
     last = chord.Magnitude();
   } else {
-    throw InputError(edgeName + " is not an isoparametric boundary of " + faceName +
-                     " (a trimmed edge, seam or mismatched parametrisation): fitted blends are not implemented");
+    return fittedSide(face, edge, name, "not an isoparametric line of " + faceName + " (a trimmed edge)", o);
   }
   const double from = first + o.start * (last - first), to = first + o.end * (last - first);
   if (!(std::abs(vOther - v0) > tolUV)) throw InputError(faceName + " has no width across " + edgeName);
@@ -218,7 +271,8 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
       if (failure.empty()) failure = e.GetMessageString();
     }
   }
-  if (side.surface.IsNull()) throw InputError(faceName + " could not be converted to a B-spline: " + failure);
+  if (side.surface.IsNull())
+    return fittedSide(face, edge, name, faceName + " could not be converted to a B-spline: " + failure, o);
   Handle(Geom_BSplineSurface)& s = side.surface;
   if (s->IsUPeriodic()) s->SetUNotPeriodic();
   if (s->IsVPeriodic()) s->SetVNotPeriodic();
@@ -242,6 +296,42 @@ Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, co
   const gp_Pnt e0 = s->Pole(1, 1), e1 = s->Pole(s->NbUPoles(), 1);
   side.report.closed = e0.Distance(e1) <= 1e-12 * std::max(1.0, length);
   return side;
+}
+
+/// readSide, and 17 points of the edge's covered part.
+Side prepareSide(const TopoDS_Face& face, int index, const std::string& name, const FaceBlendOptions& o) {
+  Side side = readSide(face, index, name, o);
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(face, TopAbs_EDGE, edges);
+  BRepAdaptor_Curve c(TopoDS::Edge(edges(index)));
+  const double f = c.FirstParameter(), l = c.LastParameter();
+  for (int i = 0; i <= 16; ++i) {
+    const gp_Pnt p = c.Value(f + (o.start + (o.end - o.start) * i / 16.0) * (l - f));
+    side.rim.emplace_back(p.X(), p.Y(), p.Z());
+  }
+  return side;
+}
+
+/// The fitted sides' boundary data (face_blend_fitted.cpp), judged against the size of the box of
+/// both edges: the blend's pole box holds both boundary curves, so its size is at least this.
+/// kA, kB: each side's continuity (G1 fits position and normal, G2 the normal curvature too).
+void fitSides(Side& a, Side& b, int kA, int kB) {
+  Eigen::AlignedBox3d box;
+  for (const Side* s : {&a, &b})
+    for (const Vec3& p : s->rim) box.extend(p);
+  const double size = box.diagonal().norm();
+  for (Side* s : {&a, &b}) {
+    if (!s->fitted) continue;
+    if (!(size > 0) || !std::isfinite(size)) throw InputError("the two edges have no extent");
+    const FittedSide fit = fitSide(*s->fitted, s == &a ? kA : kB, size);
+    s->surface = fit.surface;
+    s->report.spans = fit.spans;
+    s->report.refinements = fit.refinements;
+    s->report.samples = fit.samples;
+    s->report.fitGap = fit.gap;
+    s->report.fitAngle = fit.angle;
+    s->report.fitCurvature = fit.curvature;
+  }
 }
 
 /// Both sides on one u-basis: common degree, merged knots (knot insertion, Boehm).
@@ -362,6 +452,7 @@ FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& fac
     throw InputError("the derivative scales must be finite and >= 0 (0: chosen for fairness)");
   Side a = prepareSide(faceA, edgeA, "a", o);
   Side b = prepareSide(faceB, edgeB, "b", o);
+  fitSides(a, b, kA, kB);
   if (o.flip) b.surface->UReverse();
   commonBasis(a, b);
   const Boundary A = boundaryRows(a.surface);

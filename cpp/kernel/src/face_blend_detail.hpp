@@ -1,8 +1,13 @@
 // Internal: what face_blend.cpp (the sides and the surface) and face_blend_fairness.cpp (the
-// cross sections and the search of their magnitudes) share (issue 29; docs/FACE_BLENDS.md).
+// cross sections and the search of their magnitudes) and face_blend_fitted.cpp (the fitted
+// boundary data) share (issue 29; docs/FACE_BLENDS.md).
 #pragma once
 #include <Eigen/Core>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_Surface.hxx>
 #include <array>
+#include <string>
 #include <vector>
 
 #include "fairsplines/face_blend.hpp"
@@ -91,6 +96,42 @@ struct Search {
   /// would turn negative are refused (infinite cost).
   double cost(const std::array<double, 4>& x);
 };
+
+// ---------------------------------------------------------------------------------------
+// Fitted sides (face_blend_fitted.cpp; docs/FACE_BLENDS.md section 1b)
+
+// The issue's tolerances: position over the blend's size, normal angle in degrees, normal
+// curvature over the curvature scale.
+constexpr double kGapTolerance = 1e-7, kAngleTolerance = 1e-4, kCurvatureTolerance = 1e-4;
+
+/// An edge on its face that is not an isoparametric boundary: the face's surface, the edge's
+/// pcurve on it over [from, to] (u = 0 and u = 1), and the side the face lies on.
+struct FittedEdge {
+  Handle(Geom_Surface) surface;
+  Handle(Geom2d_Curve) pcurve;
+  double from = 0.0, to = 1.0;
+  double inward = 1.0;  ///< +1: the face lies left of the pcurve's direction in the parameter plane; -1: right
+  std::string edgeName, faceName;
+};
+
+/// The fitted side: a B-spline surface of v-degree 2 whose rows are C, T, K (u in [0, 1]), and
+/// how the fit went (its spans, the rounds of halving, the samples, the worst misfit at the check
+/// points: gap over the size, angle in degrees, curvature over the curvature scale).
+struct FittedSide {
+  Handle(Geom_BSplineSurface) surface;
+  int spans = 0, refinements = 0, samples = 0;
+  double gap = 0.0, angle = 0.0, curvature = 0.0;
+};
+
+/// Samples the face along the edge, fits C, T, K and refines until the fit meets a tenth of the
+/// tolerances between its samples (continuity 1: position and normal; 2: also normal curvature).
+/// Throws InputError naming the edge when the budget is spent, or where the face is singular.
+FittedSide fitSide(const FittedEdge& edge, int continuity, double size);
+
+/// Normal curvature II(d, d) / I(d, d) of the tangent direction d of a surface with derivatives
+/// Xu, Xv, Xuu, Xuv, Xvv, against the unit normal N (d is written a Xu + b Xv by least squares).
+double normalCurvature(const Vec3& Xu, const Vec3& Xv, const Vec3& Xuu, const Vec3& Xuv, const Vec3& Xvv, const Vec3& N,
+                       const Vec3& d);
 
 /// The scalars (scale_a, bend_a, scale_b, bend_b) of the fairest sections: a grid of the scales,
 /// then a pattern search. Throws InputError when every candidate folds.

@@ -60,7 +60,10 @@ def report_lines(report):
     measured errors, the cross sections' certificates."""
     lines = []
     for k, (side, errors) in enumerate(zip(report.sides, report.errors or (None, None))):
-        kind = translate("FairSplines", "exact (face's poles)") if side["method"] == "exact" else side["method"]
+        if side["method"] == "exact":
+            kind = translate("FairSplines", "exact (face's poles)")
+        else:
+            kind = translate("FairSplines", "fitted ({} spans)").format(side["spans"])
         lines.append(translate("FairSplines", "Side {}: {}").format(SIDES[k], kind))
         if errors is not None:
             lines.append(translate("FairSplines", "  gap {} mm, angle {}\u00b0, jump {} %").format(

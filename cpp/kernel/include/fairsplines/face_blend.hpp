@@ -1,5 +1,5 @@
-// G1 and G2 blends between two faces along isoparametric boundary edges (issue 29;
-// src/face_blend.cpp, docs/FACE_BLENDS.md).
+// G1 and G2 blends between two faces along their edges (issue 29; src/face_blend.cpp,
+// face_blend_fitted.cpp, docs/FACE_BLENDS.md).
 #pragma once
 #include <Geom_BSplineSurface.hxx>
 #include <TopoDS_Face.hxx>
@@ -23,7 +23,9 @@ struct FaceBlendOptions {
 /// How one side was matched: v(s) = v0 - alpha s + beta s^2 / 2 carries the face's cross-boundary
 /// parameter into the blend's (docs/FACE_BLENDS.md section 2).
 struct FaceBlendSide {
-  std::string method;         ///< "exact": an isoparametric boundary, its derivatives taken from the poles
+  std::string method;         ///< "exact": an isoparametric boundary, its derivatives taken from the poles;
+                              ///< "fitted": sampled from the face and fitted until the tolerances hold
+  std::string reason;         ///< why the side is fitted ("" when exact)
   std::string surfaceType;    ///< the face's surface before conversion ("BSplineSurface", "CylindricalSurface", ...)
   std::string isoparametric;  ///< "u" or "v": the face parameter that is constant along the edge; "line": a plane
   double alpha = 0.0, beta = 0.0;
@@ -32,6 +34,11 @@ struct FaceBlendSide {
   bool rational = false;
   bool closed = false;  ///< the edge is closed (a rim circle): the blend closes in u
   int continuity = 2;   ///< 1: G1, 2: G2 along this side's edge
+  /// Fitted sides: the fit's spans, its rounds of halving spans, the face samples, and its worst
+  /// misfit between the samples (gap over the size of both edges' box, angle in degrees,
+  /// normal curvature over the curvature scale; G1: curvature not fitted, 0).
+  int spans = 0, refinements = 0, samples = 0;
+  double fitGap = 0.0, fitAngle = 0.0, fitCurvature = 0.0;
 };
 
 /// One cross section s -> blend(u, s), judged twice: the exact certificate (certifySpaceCurvature)
@@ -55,14 +62,16 @@ struct FaceBlend {
 };
 
 /// The blend between faceA along its edge number edgeA (1-based, TopExp::MapShapes order, as
-/// FreeCAD's Face.Edges) and faceB along edgeB. Each edge must be an isoparametric boundary of
-/// its face (or a straight edge of a plane); the face's surface is converted exactly to a B-spline
-/// (GeomConvert) and the blend matches its position and first (G1) and second (G2) cross-boundary
-/// derivatives in homogeneous coordinates, exactly to rounding along the whole edge.
-/// Throws InputError for an edge index out of range, a degenerate edge, an edge that is not an
-/// isoparametric boundary (trimmed edges, seams: fitted blends are not implemented), a surface
-/// that is not converted exactly (offset, other), faces that touch, non-positive weights, and a
-/// blend that would cross itself (a folded or self-approaching cross section).
+/// FreeCAD's Face.Edges) and faceB along edgeB. Where an edge is an isoparametric boundary of its
+/// face (or a straight edge of a plane) on a surface converted exactly to a B-spline (GeomConvert),
+/// the blend matches its position and first (G1) and second (G2) cross-boundary derivatives in
+/// homogeneous coordinates, exactly to rounding along the whole edge ("exact"). Elsewhere (trimmed
+/// edges, seams, isolines inside the face, other surfaces) the face's position, normal and normal
+/// curvature are sampled along the edge and fitted, refined until a tenth of the issue's
+/// tolerances holds between the samples ("fitted"; face_blend_fitted.cpp).
+/// Throws InputError for an edge index out of range, a degenerate edge, a fitted edge whose fit
+/// spends its budget or whose face is singular along it, faces that touch, non-positive weights,
+/// and a blend that would cross itself (a folded or self-approaching cross section).
 FaceBlend blendFaces(const TopoDS_Face& faceA, int edgeA, const TopoDS_Face& faceB, int edgeB,
                      const FaceBlendOptions& options = {});
 
