@@ -120,6 +120,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>At face A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
+        <source>At face B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <location filename="../freecad_workbench/gui/panels/blend_shape.py"/>
         <source>At the end: {}</source>
         <translation type="unfinished"></translation>
@@ -510,7 +520,7 @@
     </message>
     <message>
         <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
-        <source>G2: the blend meets both faces in position, tangent plane and normal curvature in every direction (exact boundary rows from the faces&apos; homogeneous poles); G1: position and tangent plane only. One choice for both sides: the blend surface&apos;s degree across (quintic for G2, cubic for G1) is shared by its two boundaries</source>
+        <source>G2: the blend meets this face in position, tangent plane and normal curvature in every direction; G1: in position and tangent plane only. Exact where the edge is an isoparametric boundary (the face&apos;s homogeneous poles), else fitted within the tolerances. Across, the blend is a quintic (G2 at both faces), a quartic (G2 at one) or a cubic (G1 at both)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -704,11 +714,6 @@
     <message>
         <location filename="../freecad_workbench/gui/curvature_map.py"/>
         <source>Mean curvature</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location filename="../freecad_workbench/gui/panels/face_blend.py"/>
-        <source>Meets in</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -155,12 +155,16 @@ def test_panel_drives_the_blend_and_cancel_restores(scene):
     good = poles(blend)
     undo_count = len(doc.UndoNames)
 
-    # G1: the blend keeps position and tangent plane, loses the curvature match
-    panel.continuity.setCurrentIndex(1)
-    assert blend.Continuity == "G1" and blend.Status.startswith("ok: G1"), blend.Status
-    sa, _ = errors(blend, a, b)
+    # G1 at face A: the blend keeps position and tangent plane there, loses the curvature match;
+    # face B keeps it (a quartic across)
+    panel.continuities[0].setCurrentIndex(1)
+    assert (blend.ContinuityA, blend.ContinuityB) == ("G1", "G2") and blend.Status.startswith("ok: G1 / G2"), \
+        blend.Status
+    sa, sb = errors(blend, a, b)
     assert sa["gap"] < 1e-7 and sa["angle"] < 1e-4 and sa["curvature_jump"] > 1e-3, sa
-    panel.continuity.setCurrentIndex(0)
+    assert sb["gap"] < 1e-7 and sb["angle"] < 1e-4 and sb["curvature_jump"] < 1e-4, sb
+    assert blend.Shape.Faces[0].Surface.VDegree == 4
+    panel.continuities[0].setCurrentIndex(0)
     np.testing.assert_allclose(poles(blend), good, rtol=0, atol=1e-12)
 
     # the depth of side A: off "Fair", then the slider; the derivative across follows
@@ -205,8 +209,8 @@ def test_panel_drives_the_blend_and_cancel_restores(scene):
     assert len(doc.UndoNames) == undo_count + 1 and doc.UndoNames[0] == "Edit face blend"
     panel.reject()
     gui().updateGui()
-    assert (blend.Continuity, blend.Flip, blend.Start, blend.End, blend.ScaleA, blend.ScaleB) == (
-        "G2", False, 0.0, 1.0, 0.0, 0.0)
+    assert (blend.ContinuityA, blend.ContinuityB, blend.Flip, blend.Start, blend.End, blend.ScaleA,
+            blend.ScaleB) == ("G2", "G2", False, 0.0, 1.0, 0.0, 0.0)
     np.testing.assert_allclose(poles(blend), good, rtol=0, atol=1e-12)
     assert blend.Shape.Faces[0].Area > 1.5 * covered
     assert not gui().Control.activeDialog() and len(doc.UndoNames) == undo_count
@@ -217,13 +221,13 @@ def test_ok_keeps_the_edit_as_one_undo_step(scene):
     blend = blend_by_command(doc, a, b)
     panel = panel_of(blend)
     undo_count = len(doc.UndoNames)
-    panel.continuity.setCurrentIndex(1)
+    panel.continuities[1].setCurrentIndex(1)
     panel.flip.setChecked(True)
     panel.accept()
     gui().updateGui()
     assert len(doc.UndoNames) == undo_count + 1 and doc.UndoNames[0] == "Edit face blend"
     doc.undo()
-    assert (blend.Continuity, blend.Flip) == ("G2", False)
+    assert (blend.ContinuityB, blend.Flip) == ("G2", False)
 
 
 def test_zebra_on_the_faces_and_the_continuity_check_of_the_joins(scene):
@@ -241,9 +245,9 @@ def test_zebra_on_the_faces_and_the_continuity_check_of_the_joins(scene):
     # the two rims (the blend's own seam is a seam, not a join)
     assert [r.continuity for r in joins] == ["G2", "G2"], joins
     assert "G2" in panel.joins.text()
-    panel.continuity.setCurrentIndex(1)  # re-checked after the recompute: the rims are G1 now
+    panel.continuities[1].setCurrentIndex(1)  # re-checked after the recompute: G1 at face B now
     joins = [r for r in continuity.current().records if r.kind == "shared"]
-    assert [r.continuity for r in joins] == ["G1", "G1"], joins
+    assert sorted(r.continuity for r in joins) == ["G1", "G2"], joins
     panel.reject()
     gui().updateGui()
     assert continuity.current() is None and not zebra_shape.shown()

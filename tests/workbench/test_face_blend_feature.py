@@ -57,7 +57,8 @@ def test_save_reopen_recompute_is_identical(doc, tmp_path):
     reopened = FreeCAD.openDocument(path)
     try:
         blend = reopened.getObject("FaceBlend")
-        assert isinstance(blend.Proxy, FaceBlend) and (blend.Version, blend.Continuity) == (1, "G2")
+        assert isinstance(blend.Proxy, FaceBlend)
+        assert (blend.Version, blend.ContinuityA, blend.ContinuityB) == (FaceBlend.VERSION, "G2", "G2")
         # The saved shape and the recompute from the saved sources agree to rounding (the sources'
         # BRep text in the file keeps 17 digits, not every bit of a zero: 5e-18 was seen).
         np.testing.assert_allclose(_poles(blend), before, rtol=0, atol=1e-14)
@@ -79,7 +80,43 @@ def test_bad_sources_keep_the_last_good_shape(doc):
     assert "Invalid" in blend.State
     np.testing.assert_array_equal(_poles(blend), good)
     blend.EdgeB = (b, rim_edge(b, 2.0))
-    blend.Continuity = "G1"
+    blend.ContinuityA = blend.ContinuityB = "G1"
     doc.recompute()
     assert blend.Status.startswith("ok: G1"), blend.Status
     assert isinstance(blend.Shape.Faces[0].Surface, Part.BSplineSurface)
+
+
+def test_continuity_per_side_and_a_version_1_file_migrates(doc, tmp_path):
+    """G2 at the first face, G1 at the second: the status says so and the surface is a quartic
+    across (OCCT's VDegree). A file of version 1 (one Continuity for both sides) reopens with
+    that value on both sides, the old property gone, and recomputes to the same blend."""
+    a, b = _cylinders(doc, offset=0.2)
+    blend = _make(doc, a, b)
+    blend.ContinuityB = "G1"
+    doc.recompute()
+    assert blend.Status.startswith("ok: G2 / G1"), blend.Status
+    assert blend.Shape.Faces[0].Surface.VDegree == 4
+    # Made old: the one property of version 1, set to G1.
+    blend.ContinuityA = blend.ContinuityB = "G1"
+    doc.recompute()
+    g1 = _poles(blend)
+    blend.removeProperty("ContinuityA")
+    blend.removeProperty("ContinuityB")
+    blend.addProperty("App::PropertyEnumeration", "Continuity", "Face blend", "")
+    blend.Continuity = ["G1", "G2"]
+    blend.Continuity = "G1"
+    blend.Version = 1
+    path = str(tmp_path / "face_blend_v1.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    reopened = FreeCAD.openDocument(path)
+    try:
+        blend = reopened.getObject("FaceBlend")
+        assert "Continuity" not in blend.PropertiesList
+        assert (blend.Version, blend.ContinuityA, blend.ContinuityB) == (2, "G1", "G1")
+        blend.touch()
+        reopened.recompute()
+        assert blend.Status.startswith("ok: G1,"), blend.Status
+        np.testing.assert_allclose(_poles(blend), g1, rtol=0, atol=1e-14)
+    finally:
+        FreeCAD.closeDocument(reopened.Name)

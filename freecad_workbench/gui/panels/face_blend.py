@@ -136,7 +136,7 @@ class FaceBlendPanel(LiveEditPanel):
     """Continuity, flip, covered part, depth per side, report; zebra on the faces and the
     continuity check of the blend with its faces."""
 
-    PROPERTIES = ("Continuity", "Flip", "Start", "End", "ScaleA", "ScaleB")
+    PROPERTIES = ("ContinuityA", "ContinuityB", "Flip", "Start", "End", "ScaleA", "ScaleB")
 
     def __init__(self, obj):
         from ..qt import QtWidgets
@@ -150,15 +150,22 @@ class FaceBlendPanel(LiveEditPanel):
         self.sources = wrapped_label()
         layout.addWidget(self.sources)
         rows = form_rows(layout)
-        self.continuity = compact(QtWidgets.QComboBox(), 110)
-        self.continuity.addItems([translate("FairSplines", CONTINUITY_LABELS[c]) for c in CONTINUITIES])
-        self.continuity.setToolTip(translate(
-            "FairSplines", "G2: the blend meets both faces in position, tangent plane and normal curvature in "
-                           "every direction (exact boundary rows from the faces' homogeneous poles); G1: position "
-                           "and tangent plane only. One choice for both sides: the blend surface's degree across "
-                           "(quintic for G2, cubic for G1) is shared by its two boundaries"))
-        self.continuity.currentIndexChanged.connect(lambda i: self.apply([("Continuity", CONTINUITIES[i])]))
-        rows.addRow(translate("FairSplines", "Meets in"), self.continuity)
+        # One choice per side: the blend's degree across is the two sides' rows less one (5 for
+        # G2 at both, 4 for G2 at one and G1 at the other, 3 for G1 at both).
+        self.continuities = []
+        for prop, title in (("ContinuityA", translate("FairSplines", "At face A")),
+                            ("ContinuityB", translate("FairSplines", "At face B"))):
+            combo = compact(QtWidgets.QComboBox(), 110)
+            combo.addItems([translate("FairSplines", CONTINUITY_LABELS[c]) for c in CONTINUITIES])
+            combo.setToolTip(translate(
+                "FairSplines", "G2: the blend meets this face in position, tangent plane and normal curvature "
+                               "in every direction; G1: in position and tangent plane only. Exact where the edge "
+                               "is an isoparametric boundary (the face's homogeneous poles), else fitted within "
+                               "the tolerances. Across, the blend is a quintic (G2 at both faces), a quartic (G2 "
+                               "at one) or a cubic (G1 at both)"))
+            combo.currentIndexChanged.connect(lambda i, p=prop: self.apply([(p, CONTINUITIES[i])]))
+            rows.addRow(title, combo)
+            self.continuities.append(combo)
         self.flip = QtWidgets.QCheckBox(translate("FairSplines", "Flip direction"))
         self.flip.setToolTip(translate("FairSplines", "Pair the start of the first edge with the end of the second "
                                                       "(for a twisted blend, try this)"))
@@ -263,7 +270,8 @@ class FaceBlendPanel(LiveEditPanel):
                     texts.append(translate("FairSplines", "{}: {}, {} of {}").format(
                         side, face[0].Label, edge[1][0], face[1][0]))
             self.sources.setText("\n".join(texts))
-            self.continuity.setCurrentIndex(CONTINUITIES.index(obj.Continuity))
+            for combo, value in zip(self.continuities, (obj.ContinuityA, obj.ContinuityB)):
+                combo.setCurrentIndex(CONTINUITIES.index(value))
             self.flip.setChecked(bool(obj.Flip))
             self.start.setValue(100.0 * obj.Start)
             self.end.setValue(100.0 * obj.End)
