@@ -40,7 +40,8 @@ FaceBlendReport.__doc__ = (
     "The report of blend_faces: sides (two dicts, a then b: method 'exact' or 'fitted', reason (why fitted), "
     "surface_type, isoparametric 'u', 'v', 'line' or 'none' (fitted), alpha and beta of "
     "v(s) = v0 - alpha s + beta s^2 / 2, scale = alpha over the default magnitude, bend = beta / alpha, rational, "
-    "closed, continuity 1 or 2; fitted sides also spans, refinements, samples and the fit's worst fit_gap (of both edges' box), "
+    "closed, continuity 1 or 2; fitted sides also spans, refinements, samples and the fit's worst fit_gap (of "
+    "both edges' box), "
     "fit_angle (degrees), fit_curvature (of the curvature scale) between its samples); sections (one dict per "
     "cross section: u in [0, 1], monotone (certified), curvature_extrema (certificate), sampled_extrema, "
     "kappa_min, kappa_max, variation, reason); "
@@ -136,7 +137,8 @@ def _continuities(continuity: Any) -> tuple[int, int]:
     """(edge a's, edge b's) continuity as 1 (G1) or 2 (G2), from "G1", "G2" or a pair of them."""
     if isinstance(continuity, (tuple, list)):
         if len(continuity) != 2:
-            raise InputError(f"continuity must be 'G1', 'G2' or a pair of them (edge a's, edge b's), got {continuity!r}")
+            raise InputError(f"continuity must be 'G1', 'G2' or a pair of them (edge a's, edge b's), "
+                             f"got {continuity!r}")
         pair = (as_choice(continuity[0], "edge a's continuity", ("G1", "G2")),
                 as_choice(continuity[1], "edge b's continuity", ("G1", "G2")))
     else:

@@ -215,8 +215,9 @@ register("curvature_map", [st.one_of(S.analysis_shape, S.junk)], valid=[S.analys
 
 # ---- face blends ----------------------------------------------------------------------------
 _EDGE = st.one_of(S.count_arg, S.choice_arg("start", "end", "Edge1"), S.junk)
-_BLEND_KW = dict(continuity=st.one_of(S.choice_arg("G1", "G2"), st.tuples(S.choice_arg("G1", "G2"), S.choice_arg("G1", "G2")),
-                                       st.lists(S.choice_arg("G1", "G2"), max_size=3)), flip=S.flag_arg, start=st.one_of(st.none(), S.number_arg),
+_G = S.choice_arg("G1", "G2")
+_BLEND_KW = dict(continuity=st.one_of(_G, st.tuples(_G, _G), st.lists(_G, max_size=3)), flip=S.flag_arg,
+                 start=st.one_of(st.none(), S.number_arg),
                  end=st.one_of(st.none(), S.number_arg), sections=S.count_arg,
                  scale_a=st.one_of(st.none(), S.number_arg), scale_b=st.one_of(st.none(), S.number_arg),
                  measure=st.just(False))
