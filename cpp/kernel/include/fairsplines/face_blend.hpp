@@ -9,9 +9,9 @@
 namespace fairsplines {
 
 struct FaceBlendOptions {
-  int continuity = 2;   ///< 1: G1, 2: G2 along edge A, and along edge B unless continuityB is set
-  int continuityB = 0;  ///< G1 (1) or G2 (2) along edge B when it differs (0: continuity). Across, the
-                        ///< blend has degree continuity + continuityB + 1: 5 (G2, G2), 4 (G2, G1), 3 (G1, G1)
+  int continuity = 2;             ///< 1: G1, 2: G2 along edge A, and along edge B unless continuityB is set
+  int continuityB = 0;            ///< G1 (1) or G2 (2) along edge B when it differs (0: continuity). Across, the
+                                  ///< blend has degree continuity + continuityB + 1: 5 (G2, G2), 4 (G2, G1), 3 (G1, G1)
   bool flip = false;              ///< pair the start of edge A with the end of edge B
   double start = 0.0, end = 1.0;  ///< the part of each edge covered, as fractions of its parameter range
   int sections = 13;              ///< cross sections the fairness search and the report judge
