@@ -39,12 +39,15 @@ def rim_edge(obj, z):
 
 
 def wavy_floor_and_wall(doc):
-    """A wavy floor and a wavy wall, one bicubic face each (two knot spans each way), 40 mm
-    apart: (floor, the floor's edge facing the wall, wall, the wall's bottom edge)."""
+    """A wavy floor and a wavy wall, one bicubic C2 face each (four knot spans each way, simple
+    interior knots), 40 mm apart: (floor, the floor's edge facing the wall, wall, the wall's
+    bottom edge). (Knots of multiplicity 3 made them C0 along their middle lines: zebra showed
+    those creases as a cross on the floor.)"""
     def sheet(name, point):
         poles = [[point(i / 6.0, j / 6.0) for j in range(7)] for i in range(7)]
         surface = Part.BSplineSurface()
-        surface.buildFromPolesMultsKnots(poles, [4, 3, 4], [4, 3, 4], [0, 0.5, 1], [0, 0.5, 1], False, False, 3, 3)
+        knots, mults = [0, 0.25, 0.5, 0.75, 1], [4, 1, 1, 1, 4]
+        surface.buildFromPolesMultsKnots(poles, mults, mults, knots, knots, False, False, 3, 3)
         obj = doc.addObject("Part::Feature", name)
         obj.Shape = surface.toShape()
         return obj

@@ -6,7 +6,8 @@ section shows them. Run under a virtual display:
 
 --surface: only the surface analysis pictures (curvature map, continuity check, zebra).
 --torsion: only the fair blend in space with its curvature and torsion combs.
---face-blend: only the blend of two faces with zebra and its panel (face_blend_panel.png).
+--face-blend: only the blend of two faces with zebra and its panel (face_blend_panel.png), and with
+  the continuity check's table of its joins (face_blend_check.png).
 
 OUT_DIR defaults to docs/gui. Look at every picture before committing it."""
 import math
@@ -320,6 +321,28 @@ def face_blend(out):
     print(blend.Status)
     grab(out, "face_blend_panel", "viewIsometric")
     panel.reject()
+    settle()
+
+    # The same blend with zebra on it and its faces, and the continuity check's table of the
+    # joins (Check continuity on the blend and its two faces).
+    from freecad_workbench.gui import continuity, zebra_shape
+    from freecad_workbench.gui.panels.continuity import ContinuityTaskPanel
+    from freecad_workbench.gui.panels.face_blend import SEWN_GAP
+
+    for obj in (blend, floor, wall):
+        zebra_shape.show(obj, stripes=12, vertical=True)
+    size = blend.Shape.BoundBox.DiagonalLength
+    check = continuity.show([(blend, "Face1"), (floor, "Face1"), (wall, "Face1")], gap_tolerance=SEWN_GAP * size)
+    panel = ContinuityTaskPanel(check)
+    FreeCADGui.Control.showDialog(panel)
+    settle()
+    joins = [i for i, r in enumerate(check.records) if r.kind == "shared"]
+    if joins:
+        panel.choose(joins[0])
+    print([(r.edge, r.kind, r.continuity) for r in check.records])
+    grab(out, "face_blend_check", "viewIsometric")
+    panel.reject()
+    zebra_shape.hide()
     settle()
 
 

@@ -25,7 +25,11 @@ def test_the_readme_is_short_and_opens_with_what_the_workbench_does():
     assert len(text.splitlines()) < 300
     headings = re.findall(r"^## (.+)$", text, flags=re.M)
     assert headings[:3] == ["Contents", "Install", "A five-minute tour"]
-    assert len(re.findall(r"^!\[", text, flags=re.M)) == 3
+    # three pictures open it; the tour may show a few more (issues 27 and 29: the continuity
+    # table, zebra on a STEP import, a face blend with zebra and its continuity table)
+    opening = text.split("## Contents")[0]
+    assert len(re.findall(r"^!\[", opening, flags=re.M)) == 3
+    assert len(re.findall(r"^!\[", text, flags=re.M)) <= 6
     assert "make demo" in text and "make test" in text and "Addon Manager" in text
 
 
