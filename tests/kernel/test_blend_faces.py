@@ -487,3 +487,42 @@ def test_crossing_blend_is_refused():
         fw.blend_faces(a, edge_a, b, edge_b)
     blend, report = fw.blend_faces(a, edge_a, b, edge_b, flip=True)
     _check(blend, report)
+
+
+def _curve_extrema(curve, n=600):
+    """Interior extrema of a Part curve's curvature (OCCT's curvature at n + 1 points)."""
+    a, b = curve.FirstParameter, curve.LastParameter
+    k = np.array([curve.curvature(a + (b - a) * i / n) for i in range(n + 1)])
+    d = np.diff(k)
+    d = d[np.abs(d) > 1e-9 * max(k.max(), 1e-300)]
+    return int(np.sum(np.sign(d[1:]) != np.sign(d[:-1])))
+
+
+def test_no_wave_along_the_edges_that_the_edges_do_not_have():
+    """Along the edges the blend waves no more than the edges do: every isoline v = const (a
+    curve from one end of the blend to the other, as OCCT's vIso gives it) has at most as many
+    curvature extrema as the edge with more. A wavy floor's edge (7) into a wall's straight
+    bottom edge (0); two offset cylinders' rims (circles, 0: the isolines stay circles). The
+    count sees a wave: one middle pole of the cylinders' blend moved out by 1 % of its size."""
+    from tests.scenes import wavy_floor_and_wall
+
+    doc = FreeCAD.newDocument("NoWave")
+    try:
+        floor, edge_f, wall, edge_w = wavy_floor_and_wall(doc)
+        ea, eb = floor.Shape.getElement(edge_f), wall.Shape.getElement(edge_w)
+        wavy, _ = fw.blend_faces(floor.Shape.Faces[0], ea, wall.Shape.Faces[0], eb)
+        edges = max(_curve_extrema(e.Curve.trim(e.FirstParameter, e.LastParameter)) for e in (ea, eb))
+        assert edges == 7
+        counts = [_curve_extrema(wavy.vIso(float(v))) for v in np.linspace(0.0, 1.0, 11)]
+        assert max(counts) <= edges, counts
+    finally:
+        FreeCAD.closeDocument(doc.Name)
+    a, b = _cylinder(1.0, 0.0, 1.0), _cylinder(1.0, 2.0, 1.0, x=0.4)
+    blend, _ = fw.blend_faces(a, _rim(a, 1.0), b, _rim(b, 2.0))
+    assert [_curve_extrema(blend.vIso(float(v))) for v in np.linspace(0.0, 1.0, 11)] == [0] * 11
+    # The referee sees a wave: one middle pole moved out by 1 % of the blend's size.
+    waved = blend.copy()
+    i, j = waved.NbUPoles // 2, waved.NbVPoles // 2
+    pole = waved.getPole(i + 1, j + 1)
+    waved.setPole(i + 1, j + 1, pole + V(pole.x, pole.y, 0).normalize() * 0.01 * blend.toShape().BoundBox.DiagonalLength)
+    assert _curve_extrema(waved.vIso(0.5)) > 0
