@@ -524,5 +524,6 @@ def test_no_wave_along_the_edges_that_the_edges_do_not_have():
     waved = blend.copy()
     i, j = waved.NbUPoles // 2, waved.NbVPoles // 2
     pole = waved.getPole(i + 1, j + 1)
-    waved.setPole(i + 1, j + 1, pole + V(pole.x, pole.y, 0).normalize() * 0.01 * blend.toShape().BoundBox.DiagonalLength)
+    out = V(pole.x, pole.y, 0).normalize() * 0.01 * blend.toShape().BoundBox.DiagonalLength
+    waved.setPole(i + 1, j + 1, pole + out)
     assert _curve_extrema(waved.vIso(0.5)) > 0
