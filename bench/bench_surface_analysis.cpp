@@ -1,8 +1,9 @@
 // Benchmark: the kernel's surfaceCurvature on N scattered points of a bicubic B-spline face
 // (10 x 10 poles, 7 x 7 spans) against OCCT's own per-point route, GeomLProp_SLProps (what
-// Face.curvatureAt runs, without Python), in the same run, one core. The kernel writes into a
-// block it is given (the binding hands it numpy's) and, for comparison, into one of its own
-// allocated at each call. Figures: best and median of interleaved runs.
+// Face.curvatureAt runs, without Python), in the same run. The kernel on one core and on
+// every core (threads = 0: one a core), writing into a block it is given (the binding hands
+// it numpy's), and on one core into a block of its own allocated at each call. Figures: best
+// and median of interleaved runs.
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepLProp_SLProps.hxx>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -66,15 +68,21 @@ int main(int argc, char** argv) {
   block.values.resize(n, Eigen::NoChange);
   block.state.resize(n);
   // Interleaved: the machine is shared, its load moves between the runs.
-  std::vector<double> given, fresh, occt;
+  std::vector<double> given, shared, fresh, occt;
   for (int r = 0; r < repeats; ++r) {
     given.push_back(bench::timings(
         [&] {
-          surfaceCurvature(face, uv, block.values, block.state);
+          surfaceCurvature(face, uv, block.values, block.state, 1);
           sink += block.k1().sum();
         },
         1)[0]);
-    fresh.push_back(bench::timings([&] { sink += surfaceCurvature(face, uv).k1().sum(); }, 1)[0]);
+    shared.push_back(bench::timings(
+        [&] {
+          surfaceCurvature(face, uv, block.values, block.state, 0);
+          sink += block.k1().sum();
+        },
+        1)[0]);
+    fresh.push_back(bench::timings([&] { sink += surfaceCurvature(face, uv, 1).k1().sum(); }, 1)[0]);
     occt.push_back(bench::timings(
         [&] {
           BRepAdaptor_Surface surface(face);
@@ -87,16 +95,22 @@ int main(int argc, char** argv) {
         1)[0]);
   }
   const auto [givenBest, givenMedian] = bestAndMedian(given);
+  const auto [sharedBest, sharedMedian] = bestAndMedian(shared);
   const auto [freshBest, freshMedian] = bestAndMedian(fresh);
   const auto [occtBest, occtMedian] = bestAndMedian(occt);
-  std::printf("surfaceCurvature, %d scattered points of a bicubic face (7 x 7 spans), one core, best / median of %d:\n",
-              n, repeats);
-  std::printf("  kernel into a given block %7.2f / %7.2f ms (%.2f / %.2f million points/s)\n", givenBest * 1e3,
-              givenMedian * 1e3, n / givenBest / 1e6, n / givenMedian / 1e6);
-  std::printf("  kernel into a new block   %7.2f / %7.2f ms (%.2f / %.2f million points/s)\n", freshBest * 1e3,
-              freshMedian * 1e3, n / freshBest / 1e6, n / freshMedian / 1e6);
-  std::printf("  OCCT BRepLProp_SLProps loop %7.2f / %7.2f ms   ratio (given block) %.2f / %.2f\n", occtBest * 1e3,
-              occtMedian * 1e3, occtBest / givenBest, occtMedian / givenMedian);
+  std::printf("surfaceCurvature, %d scattered points of a bicubic face (7 x 7 spans), best / median of %d:\n", n,
+              repeats);
+  std::printf("  kernel, one core, into a given block   %7.2f / %7.2f ms (%.2f / %.2f million points/s)\n",
+              givenBest * 1e3, givenMedian * 1e3, n / givenBest / 1e6, n / givenMedian / 1e6);
+  std::printf("  kernel, %u cores, into a given block    %7.2f / %7.2f ms (%.2f / %.2f million points/s)\n",
+              std::thread::hardware_concurrency(), sharedBest * 1e3, sharedMedian * 1e3, n / sharedBest / 1e6,
+              n / sharedMedian / 1e6);
+  std::printf("  kernel, one core, into a new block     %7.2f / %7.2f ms (%.2f / %.2f million points/s)\n",
+              freshBest * 1e3, freshMedian * 1e3, n / freshBest / 1e6, n / freshMedian / 1e6);
+  std::printf(
+      "  OCCT BRepLProp_SLProps loop, one core %7.2f / %7.2f ms   ratio one core %.2f / %.2f, all cores %.2f / %.2f\n",
+      occtBest * 1e3, occtMedian * 1e3, occtBest / givenBest, occtMedian / givenMedian, occtBest / sharedBest,
+      occtMedian / sharedMedian);
   std::printf("(checksum %g)\n", sink);
   return 0;
 }

@@ -1,9 +1,9 @@
 """Python benchmark of surface analysis (issue 27), each against its baseline in one run:
 
 - fw.surface_curvature on N points of a bicubic B-spline face (7 x 7 knot spans) against a
-  Python loop over Face.curvatureAt at the same points, interleaved runs, best and median;
-  and the kernel binding alone (the call without the BRep export of the face), in points
-  per second;
+  Python loop over Face.curvatureAt at the same points, interleaved runs, best and median:
+  on every core (the default) and on one (threads=1); and the kernel binding alone (the call
+  without the BRep export of the face), in points per second;
 - fw.curvature_map of a torus against the Mesh workbench's curvature (Mesh.getCurvaturePerVertex)
   on a meshing of the same face: time, and the error of each against the closed form;
 - fw.curvature_map of 10 filleted boxes (260 faces) meshed to 0.001 mm: build time;
@@ -86,14 +86,18 @@ def curvature(n, repeats):
         for u, v in pairs:
             face.curvatureAt(u, v)
 
-    (whole, whole_median, whole_first), (core, core_median, _), (occt, occt_median, _) = interleaved(
-        [lambda: fw.surface_curvature(face, uv), lambda: kernel.surface_curvature(brep, uv), loop], repeats)
+    (whole, whole_median, whole_first), (single, single_median, _), (core, core_median, _), (occt, occt_median, _) = \
+        interleaved([lambda: fw.surface_curvature(face, uv), lambda: fw.surface_curvature(face, uv, threads=1),
+                     lambda: kernel.surface_curvature(brep, uv), loop], repeats)
+    cores = os.cpu_count()
     print(f"surface_curvature, {n} points of a bicubic face (7 x 7 spans), best / median of {repeats}, interleaved:")
-    print(f"  fw.surface_curvature {whole * 1e3:7.2f} / {whole_median * 1e3:7.2f} ms   "
+    print(f"  fw.surface_curvature ({cores} cores) {whole * 1e3:7.2f} / {whole_median * 1e3:7.2f} ms   "
           f"kernel binding alone {core * 1e3:7.2f} / {core_median * 1e3:7.2f} ms "
           f"({n / core / 1e6:.1f} / {n / core_median / 1e6:.1f} million points/s)")
+    print(f"  fw.surface_curvature (threads=1) {single * 1e3:7.2f} / {single_median * 1e3:7.2f} ms")
     print(f"  Python loop over Face.curvatureAt {occt * 1e3:7.1f} / {occt_median * 1e3:7.1f} ms   "
-          f"ratio {occt / whole:.1f}x / {occt_median / whole_median:.1f}x")
+          f"ratio {occt / whole:.1f}x / {occt_median / whole_median:.1f}x ({cores} cores), "
+          f"{occt / single:.1f}x / {occt_median / single_median:.1f}x (one core)")
     print(f"  first call of fw.surface_curvature (fresh memory) {whole_first * 1e3:7.2f} ms   "
           f"ratio to the loop's best {occt / whole_first:.1f}x")
 

@@ -187,7 +187,7 @@ def fair_fit(points: FloatArray, tolerance: float, closed: bool = False, noise: 
 
 # ---- surface analysis (issue 27): shapes as BRep text (Part's exportBrepToString)
 
-def surface_curvature(brep: str, uv: FloatArray
+def surface_curvature(brep: str, uv: FloatArray, threads: int = 0
                       ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
                                  FloatArray, FloatArray, npt.NDArray[np.int8]]: ...  # views of one (16, N) block
 def edge_continuity(brep: str, samples_per_span: int = 0, gap_tolerance: float = -1.0,

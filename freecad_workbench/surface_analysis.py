@@ -90,15 +90,20 @@ def _uv(uv) -> np.ndarray:
     return array  # the kernel names a point that is not finite, in its one pass over uv
 
 
-def surface_curvature(face: Any, uv: PointsLike) -> SurfaceCurvature:
+def surface_curvature(face: Any, uv: PointsLike, threads: Optional[int] = None) -> SurfaceCurvature:
     """Principal curvatures, Gaussian and mean curvature, principal directions and normal at
     the parameters uv (N, 2) of a Part.Face (or a shape of one face), in one kernel call.
 
     Convex is positive as seen from Face.normalAt's side. Raises InputError for bad uv (wrong
     shape, NaN, more than 10% outside the face's parameter range), where the surface cannot
-    be evaluated, or at a singular point without a limit (a cone's apex), naming the point."""
+    be evaluated, or at a singular point without a limit (a cone's apex), naming the point.
+    threads: at most this many threads share a call of 32,768 points or more on a B-spline
+    or Bezier face (None: one a core, at most 8; 1: this thread only); the values are the
+    same bits whatever it is."""
+    count = 0 if threads is None else as_count(threads, "threads", 1, 64)
     # Views of one (16, N) block the kernel wrote in place (cpp/python/bind_surface_analysis.cpp).
-    k1, k2, gaussian, mean, dir1, dir2, normal, points, state = kernel.surface_curvature(_brep(face, "face"), _uv(uv))
+    k1, k2, gaussian, mean, dir1, dir2, normal, points, state = kernel.surface_curvature(
+        _brep(face, "face"), _uv(uv), count)
     return SurfaceCurvature(k1, k2, gaussian, mean, dir1, dir2, normal, points, state == 1, state == 2)
 
 

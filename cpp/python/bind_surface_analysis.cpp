@@ -44,7 +44,7 @@ py::dict continuityDict(const EdgeContinuity& r) {
 void bindSurfaceAnalysis(py::module_& m) {
   m.def(
       "surface_curvature",
-      [](const std::string& brep, const PointsRef& uv) {
+      [](const std::string& brep, const PointsRef& uv, int threads) {
         const TopoDS_Face face = singleFace(readBrepShape(brep));
         // The results in one numpy block, (16, n) in C order (the kernel's column-major n x 16),
         // written by the kernel in place and handed out as views of it. numpy allocates it and
@@ -54,7 +54,7 @@ void bindSurfaceAnalysis(py::module_& m) {
         py::array_t<double> block({width, n});
         py::array_t<std::int8_t> state(n);
         surfaceCurvature(face, uv, Eigen::Map<CurvatureBlock>(block.mutable_data(), n, width),
-                         Eigen::Map<PointStates>(state.mutable_data(), n));
+                         Eigen::Map<PointStates>(state.mutable_data(), n), threads);
         const auto view = [&](int column, py::ssize_t size) {
           const py::ssize_t step = sizeof(double);
           const double* data = block.data() + column * n;
@@ -66,10 +66,10 @@ void bindSurfaceAnalysis(py::module_& m) {
                               view(column::mean, 1), view(column::dir1, 3), view(column::dir2, 3),
                               view(column::normal, 3), view(column::point, 3), state);
       },
-      "brep"_a, "uv"_a,
+      "brep"_a, "uv"_a, "threads"_a = 0,
       "(k1, k2, gaussian, mean, dir1, dir2, normal, points, state) at the rows (u, v) of uv on the one face of the "
       "BRep text; convex positive as seen from the face normal; state 0 regular, 1 umbilic, 2 degenerate (a limit). "
-      "The arrays are views of one (16, N) block.");
+      "The arrays are views of one (16, N) block. threads: at most this many threads (0: one a core).");
   m.def(
       "edge_continuity",
       [](const std::string& brep, int samplesPerSpan, double gapTolerance, double angleTolerance,

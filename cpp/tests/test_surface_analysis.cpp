@@ -4,6 +4,7 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -14,6 +15,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_SphericalSurface.hxx>
+#include <Geom_ToroidalSurface.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -23,9 +25,12 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
+#include "surface_analysis_detail.hpp"
 #include "surface_patches.hpp"
 
 using namespace fairsplines;
@@ -262,4 +267,154 @@ TEST(SurfaceAnalysis, CurvatureMapOfASphereIsConstant) {
   ASSERT_GT(m.triangles.rows(), 0);
   EXPECT_NEAR(m.values.minCoeff(), 0.5, 1e-9);
   EXPECT_NEAR(m.values.maxCoeff(), 0.5, 1e-9);
+}
+
+// ---- the batch, the threads and the scalar path (surface_curvature_batch.cpp)
+
+namespace {
+
+/// A rational B-spline of degrees (3, 3) whose u knots crowd near 0 (many spans in one of the
+/// span table's buckets) and are even in v, moved by a location.
+TopoDS_Face crowdedKnotsFace() {
+  TColgp_Array2OfPnt poles(1, 9, 1, 5);
+  TColStd_Array2OfReal weights(1, 9, 1, 5);
+  for (int i = 1; i <= 9; ++i) {
+    for (int j = 1; j <= 5; ++j) {
+      poles(i, j) = gp_Pnt(i, 1.2 * j, 0.5 * std::sin(1.1 * i + 0.8 * j));
+      weights(i, j) = 1.0 + 0.25 * ((i + j) % 3);
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, 7), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 7), vMults(1, 3);
+  const double u[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};  // 4 + 5 + 4 - 3 - 1 = 9 poles
+  for (int i = 1; i <= 7; ++i) uKnots(i) = u[i - 1], uMults(i) = (i == 1 || i == 7) ? 4 : 1;
+  vKnots(1) = 0.0, vKnots(2) = 0.5, vKnots(3) = 1.0;  // 4 + 1 + 4 - 3 - 1 = 5 poles
+  vMults(1) = 4, vMults(2) = 1, vMults(3) = 4;
+  gp_Trsf move;
+  move.SetRotation(gp_Ax1(gp_Pnt(0, 1, 0), gp_Dir(0, 1, 1)), 0.4);
+  return TopoDS::Face(
+      BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 3), 1e-7)
+          .Face()
+          .Moved(TopLoc_Location(move)));
+}
+
+/// n points spread over the face's parameter box: random, with every 7th on a u knot line and
+/// every 11th on a v one (the knots of crowdedKnotsFace; others land between).
+Eigen::MatrixXd scattered(const TopoDS_Face& face, Eigen::Index n, unsigned seed) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double uKnots[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};
+  Eigen::MatrixXd uv(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    uv(i, 0) = i % 7 == 0 ? u0 + (u1 - u0) * uKnots[i % 49 / 7] : u0 + (u1 - u0) * unit(random);
+    uv(i, 1) = i % 11 == 0 ? v0 + (v1 - v0) * 0.5 : v0 + (v1 - v0) * unit(random);
+  }
+  return uv;
+}
+
+}  // namespace
+
+// The batch's vectorised loop and jets against the scalar path (FaceSurface::frame and
+// principalCurvatures, one point at a time): the same bits, at every point, on B-spline faces
+// (the batch's own patches: rational, moved, reversed, crowded knots, a periodic sphere whose
+// points are all umbilic), on faces OCCT evaluates (a torus, a sphere), and with 1, 2, 3 and
+// automatic threads. The block starts as NaN, so that a row no thread wrote shows.
+TEST(SurfaceAnalysis, BatchesAndThreadsGiveTheScalarPathsBits) {
+  Handle(Geom_BSplineSurface) sphere = GeomConvert::SurfaceToBSplineSurface(new Geom_SphericalSurface(gp_Ax3(), 2.0));
+  if (!sphere->IsUPeriodic()) sphere->SetUPeriodic();
+  const TopoDS_Face crowded = crowdedKnotsFace();
+  const TopoDS_Face torus =
+      BRepBuilderAPI_MakeFace(new Geom_ToroidalSurface(gp_Ax3(gp_Pnt(1, 2, 3), gp_Dir(0, 1, 1)), 4.0, 1.5), 0.0,
+                              2 * M_PI, 0.0, 2 * M_PI, 1e-7)
+          .Face();
+  const struct {
+    TopoDS_Face face;
+    bool patches;
+  } cases[] = {{crowded, true},
+               {TopoDS::Face(crowded.Reversed()), true},
+               {BRepBuilderAPI_MakeFace(sphere, 1e-7).Face(), true},
+               {torus, false},
+               {firstFace(BRepPrimAPI_MakeSphere(3.0).Shape()), false}};
+  const Eigen::Index n = 50000;  // 3 ranges of 16384 points or more
+  int umbilics = 0;
+  for (const auto& c : cases) {
+    ASSERT_EQ(detail::PowerPatches::of(c.face) != nullptr, c.patches);
+    const Eigen::MatrixXd uv = scattered(c.face, n, 27);
+    SurfaceCurvature one;
+    one.values.setConstant(n, curvature_column::count, std::nan(""));
+    one.state.setConstant(n, -1);
+    surfaceCurvature(c.face, uv, one.values, one.state, 1);
+    // The scalar path at every point.
+    const detail::FaceSurface surface(c.face);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      detail::SurfaceFrame f;
+      ASSERT_TRUE(surface.frame(uv(i, 0), uv(i, 1), f)) << i;
+      const detail::Principal k = detail::principalCurvatures(f);
+      const double expected[curvature_column::count] = {k.k1,       k.k2,       k.k1 * k.k2, 0.5 * (k.k1 + k.k2),
+                                                        k.dir1.X(), k.dir1.Y(), k.dir1.Z(),  k.dir2.X(),
+                                                        k.dir2.Y(), k.dir2.Z(), f.n.X(),     f.n.Y(),
+                                                        f.n.Z(),    f.p.X(),    f.p.Y(),     f.p.Z()};
+      for (int col = 0; col < curvature_column::count; ++col) {
+        ASSERT_EQ(one.values(i, col), expected[col]) << "point " << i << ", column " << col;
+      }
+      ASSERT_EQ(one.state[i], static_cast<int>(k.state)) << i;
+      umbilics += k.state == PointState::Umbilic;
+    }
+    for (int threads : {0, 2, 3}) {
+      SurfaceCurvature shared;
+      shared.values.setConstant(n, curvature_column::count, std::nan(""));
+      shared.state.setConstant(n, -1);
+      surfaceCurvature(c.face, uv, shared.values, shared.state, threads);
+      ASSERT_EQ(std::memcmp(shared.values.data(), one.values.data(), sizeof(double) * n * curvature_column::count), 0)
+          << threads << " threads";
+      ASSERT_EQ(shared.state, one.state) << threads << " threads";
+    }
+  }
+  EXPECT_GE(umbilics, 2 * n - 20);  // both spheres' points (but a few near their poles, where rounding parts k1, k2)
+  EXPECT_THROW(surfaceCurvature(crowded, scattered(crowded, 10, 1), -1), InputError);
+}
+
+// With threads, a refusal still names the first point that fails: a B-spline cone (its apex
+// has no curvature) with apex points in the first and the last of three ranges, and in the
+// last only.
+TEST(SurfaceAnalysis, ThreadsReportTheFirstRefusedPoint) {
+  const TopoDS_Shape cone = BRepBuilderAPI_NurbsConvert(BRepPrimAPI_MakeCone(2.0, 0.0, 3.0).Shape()).Shape();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(cone, TopAbs_FACE, faces);
+  int checked = 0;
+  for (int k = 1; k <= faces.Extent(); ++k) {
+    const TopoDS_Face face = TopoDS::Face(faces(k));
+    if (!detail::PowerPatches::of(face)) continue;
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    Eigen::MatrixXd uv = scattered(face, 50000, 5);
+    detail::SurfaceFrame f;
+    const detail::FaceSurface surface(face);
+    // The apex: the end of v where the frame degenerates (radius 0).
+    const double apex = surface.frame(0.5 * (u0 + u1), v1, f) ? v0 : v1;
+    if (surface.frame(0.5 * (u0 + u1), apex, f)) continue;  // the base disc
+    for (Eigen::Index i = 0; i < uv.rows(); ++i) uv(i, 1) = v0 + (v1 - v0) * (0.1 + 0.8 * (uv(i, 1) - v0) / (v1 - v0));
+    const auto refusal = [&](const Eigen::MatrixXd& points, int threads) {
+      try {
+        surfaceCurvature(face, points, threads);
+      } catch (const InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string("no refusal");
+    };
+    Eigen::MatrixXd both = uv;
+    both(123, 1) = apex;
+    both(45678, 1) = apex;
+    Eigen::MatrixXd last = uv;
+    last(45678, 1) = apex;
+    for (int threads : {1, 3}) {
+      EXPECT_NE(refusal(both, threads).find("point 123 "), std::string::npos) << refusal(both, threads);
+      EXPECT_NE(refusal(last, threads).find("point 45678 "), std::string::npos) << refusal(last, threads);
+    }
+    EXPECT_EQ(refusal(uv, 3), "no refusal");
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1);
 }

@@ -204,7 +204,7 @@ register_method("shapes", "pole_at", S.shape, [st.one_of(S.choice_arg("start", "
 _uv = st.floats(-1.0, 7.0)
 GOOD_UV = st.lists(st.tuples(_uv, _uv), min_size=1, max_size=6)
 register("surface_curvature", [st.one_of(S.analysis_face, S.junk), st.one_of(S.points_arg, GOOD_UV)],
-         valid=[S.analysis_face, GOOD_UV], examples=25)
+         valid=[S.analysis_face, GOOD_UV], kwargs=dict(threads=st.one_of(st.none(), S.count_arg)), examples=25)
 register("edge_continuity", [st.one_of(S.analysis_shape, S.junk)], valid=[S.analysis_shape],
          kwargs=dict(samples=st.one_of(st.none(), S.count_arg), gap_tolerance=st.one_of(st.none(), S.number_arg),
                      angle_tolerance=S.number_arg, curvature_tolerance=S.number_arg), examples=15)

@@ -284,6 +284,29 @@ def test_results_are_views_of_one_block_and_match_occt(reverse):
         assert np.array_equal(o.k1, c.k1) and np.array_equal(o.dir1, c.dir1) and np.array_equal(o.points, c.points)
 
 
+def test_threads_give_the_same_bits_and_bad_counts_are_refused():
+    """A call of 40,000 points (past 32,768, where threads share it) gives the same bits with
+    one thread, three and the default; spot checks against Face.curvatureAt in the last
+    thread's range. A bad thread count is refused by name."""
+    face = _multi_span_face()
+    u0, u1, v0, v1 = face.ParameterRange
+    rng = np.random.default_rng(11)
+    n = 40000
+    uv = np.c_[rng.uniform(u0, u1, n), rng.uniform(v0, v1, n)]
+    one = fw.surface_curvature(face, uv, threads=1)
+    for threads in (None, 3):
+        other = fw.surface_curvature(face, uv, threads=threads)
+        for name in ("k1", "k2", "gaussian", "mean", "dir1", "dir2", "normal", "points", "umbilic", "degenerate"):
+            assert np.array_equal(getattr(other, name), getattr(one, name)), (threads, name)
+    for i in range(n - 50, n):
+        k1, k2 = sorted((-k for k in face.curvatureAt(*uv[i])), reverse=True)
+        scale = max(abs(k1), abs(k2), 1e-3)
+        assert one.k1[i] == pytest.approx(k1, abs=1e-10 * scale) and one.k2[i] == pytest.approx(k2, abs=1e-10 * scale)
+    for bad in (0, -1, 1.5, "2", True):
+        with pytest.raises(fw.InputError, match="threads"):
+            fw.surface_curvature(face, uv[:10], threads=bad)
+
+
 # ---- continuity across edges
 
 def _face_of(shape, name):

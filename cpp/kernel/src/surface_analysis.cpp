@@ -14,14 +14,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
+#include <memory>
 #include <numeric>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
 #include "finite.hpp"
 #include "surface_analysis_detail.hpp"
+#include "surface_lanes.hpp"
 
 namespace fairsplines {
 
@@ -67,6 +71,13 @@ FaceSurface::FaceSurface(const TopoDS_Face& face) : surface_(face, false) {
   }
 }
 
+namespace {
+
+lanes::Vec3 vec3(const gp_Vec& x) { return {x.X(), x.Y(), x.Z()}; }
+gp_Vec vec(const lanes::Vec3& x) { return gp_Vec(x.x, x.y, x.z); }
+
+}  // namespace
+
 bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   gp_Vec suu, svv, suv;
   if (patches_) {
@@ -74,18 +85,36 @@ bool FaceSurface::frame(double u, double v, SurfaceFrame& f) const {
   } else {
     surface_.D2(u, v, f.p, f.su, f.sv, suu, svv, suv);
   }
-  f.E = f.su.Dot(f.su);
-  f.F = f.su.Dot(f.sv);
-  f.G = f.sv.Dot(f.sv);
-  const gp_Vec cross = f.su.Crossed(f.sv);
-  const double length = cross.Magnitude();
-  // Su x Sv vanishing against the larger of |Su|^2, |Sv|^2: a pole, an apex, a collapsed row.
-  if (!(length > 1e-9 * std::max(f.E, f.G))) return false;
-  f.n = cross * (sign / length);
-  f.L = -suu.Dot(f.n);
-  f.M = -suv.Dot(f.n);
-  f.N = -svv.Dot(f.n);
+  const lanes::Forms forms = lanes::forms(vec3(f.su), vec3(f.sv), vec3(suu), vec3(svv), vec3(suv), sign);
+  if (!forms.regular()) return false;
+  f.E = forms.E;
+  f.F = forms.F;
+  f.G = forms.G;
+  f.n = vec(forms.n);
+  f.L = forms.L;
+  f.M = forms.M;
+  f.N = forms.N;
   return true;
+}
+
+void FaceSurface::jets(const double* uv, std::ptrdiff_t stride, int m, CurvatureBatch& b) const {
+  if (patches_) {
+    patches_->jets(uv, stride, m, b);
+    return;
+  }
+  gp_Pnt p;
+  gp_Vec su, sv, suu, svv, suv;
+  for (int i = 0; i < m; ++i) {
+    surface_.D2(uv[i * stride], uv[i * stride + 1], p, su, sv, suu, svv, suv);
+    for (int c = 0; c < 3; ++c) {
+      b.p[c][i] = p.Coord(c + 1);
+      b.su[c][i] = su.Coord(c + 1);
+      b.sv[c][i] = sv.Coord(c + 1);
+      b.suu[c][i] = suu.Coord(c + 1);
+      b.svv[c][i] = svv.Coord(c + 1);
+      b.suv[c][i] = suv.Coord(c + 1);
+    }
+  }
 }
 
 namespace {
@@ -130,43 +159,23 @@ bool FaceSurface::curvature(double u, double v, SurfaceFrame& f, Principal& k) c
 // ---- principal curvatures (do Carmo §3-3)
 
 Principal principalCurvatures(const SurfaceFrame& f) {
+  lanes::Forms forms;
+  forms.n = vec3(f.n);
+  forms.E = f.E;
+  forms.F = f.F;
+  forms.G = f.G;
+  forms.L = f.L;
+  forms.M = f.M;
+  forms.N = f.N;
+  forms.length = 1.0;  // regular
+  forms.size = 0.0;
+  const lanes::Curvatures c = lanes::principal(forms, vec3(f.su), vec3(f.sv));
   Principal k;
-  const double det = f.E * f.G - f.F * f.F;  // det I > 0 away from degenerate points
-  const double inverse = 1.0 / det;          // one division, four products
-  // The shape operator's matrix W = I^-1 II = [a b; c d].
-  const double a = (f.G * f.L - f.F * f.M) * inverse, b = (f.G * f.M - f.F * f.N) * inverse;
-  const double c = (f.E * f.M - f.F * f.L) * inverse, d = (f.E * f.N - f.F * f.M) * inverse;
-  const double H = 0.5 * (a + d);                      // mean curvature, (EN - 2FM + GL) / 2 det
-  const double K = (f.L * f.N - f.M * f.M) * inverse;  // Gaussian curvature, det II / det I
-  const double half = 0.5 * (a - d);
-  const double r = std::sqrt(std::max(half * half + b * c, 0.0));  // k1,2 = H +- sqrt(H^2 - K)
-  // The root without cancellation first, the other from k1 k2 = K.
-  if (H >= 0.0) {
-    k.k1 = H + r;
-    k.k2 = k.k1 != 0.0 ? K / k.k1 : H - r;
-  } else {
-    k.k2 = H - r;
-    k.k1 = K / k.k2;
-  }
-  if (k.k2 > k.k1) std::swap(k.k1, k.k2);  // rounding of K / k1 at an umbilic
-  // The eigenvector of W for k1: (W - k1) x = 0, from the better-conditioned row.
-  const double x0a = b, x1a = k.k1 - a, x0b = k.k1 - d, x1b = c;
-  const bool rowA = x0a * x0a + x1a * x1a >= x0b * x0b + x1b * x1b;
-  const double x0 = rowA ? x0a : x0b, x1 = rowA ? x1a : x1b;
-  gp_Vec dir = f.su * x0 + f.sv * x1;
-  const double scale = std::max(std::abs(k.k1), std::abs(k.k2));
-  const double gap = 1e-12 * (k.k1 - k.k2);
-  // Umbilic (k1 = k2 to 1e-8 of their size, a plane included): every direction is
-  // principal; dir1 is Su. So is the direction of a near-umbilic that rounding hides:
-  // |dir| <= 1e-12 (k1 - k2) sqrt(E + G), compared squared (no square roots).
-  if (!(k.k1 - k.k2 > 1e-8 * scale) || !(dir.SquareMagnitude() > gap * gap * (f.E + f.G))) {
-    k.state = PointState::Umbilic;
-    dir = f.su.Magnitude() > 0.0 ? f.su : f.sv;
-  }
-  // Orthogonal to n exactly (dir lies in the tangent plane up to rounding).
-  dir -= f.n * dir.Dot(f.n);
-  k.dir1 = dir.Normalized();
-  k.dir2 = f.n.Crossed(k.dir1);
+  k.k1 = c.k1;
+  k.k2 = c.k2;
+  k.dir1 = vec(c.dir1);
+  k.dir2 = vec(c.dir2);
+  k.state = c.umbilic != 0.0 ? PointState::Umbilic : PointState::Regular;
   return k;
 }
 
@@ -187,6 +196,16 @@ double normalCurvature(const SurfaceFrame& f, const gp_Vec& d) {
 
 namespace {
 
+/// A thread evaluates at least this many points (about 0.8 ms of work: starting a thread
+/// costs some 50 us).
+constexpr Eigen::Index kPointsPerThread = 16384;
+
+/// The threads a call may use: `threads`, or where it is 0 the processor's cores (at most 8).
+Eigen::Index threadCount(int threads) {
+  if (threads > 0) return std::min(threads, 64);
+  return std::clamp<Eigen::Index>(std::thread::hardware_concurrency(), 1, 8);
+}
+
 std::string pointName(Eigen::Index i, double u, double v) {
   return "point " + std::to_string(i) + " (u = " + exactNumber(u) + ", v = " + exactNumber(v) + ")";
 }
@@ -194,8 +213,9 @@ std::string pointName(Eigen::Index i, double u, double v) {
 }  // namespace
 
 void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<CurvatureBlock> values,
-                      Eigen::Ref<PointStates> state) {
+                      Eigen::Ref<PointStates> state, int threads) {
   if (face.IsNull()) throw InputError("the face is null");
+  if (threads < 0) throw InputError("threads must be 0 (one a core) or more, got " + std::to_string(threads));
   if (uv.cols() != 2) throw InputError("uv must have 2 columns (u, v), got " + std::to_string(uv.cols()));
   const Eigen::Index n = uv.rows();
   if (n == 0) throw InputError("uv is empty: no points to evaluate");
@@ -206,24 +226,20 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
   const detail::FaceSurface surface(face);
   const double wu = surface.u1 - surface.u0, wv = surface.v1 - surface.v0;
   if (!(std::isfinite(wu) && std::isfinite(wv))) throw InputError("the face is unbounded: trim it first");
-  for (Eigen::Index i = 0; i < n; ++i) {
+  const double uLow = surface.u0 - 0.1 * wu, uHigh = surface.u1 + 0.1 * wu;
+  const double vLow = surface.v0 - 0.1 * wv, vHigh = surface.v1 + 0.1 * wv;
+  // One vectorised pass; where it finds a point out, a second names it.
+  const bool inside = detail::allInside(uv.data(), n, uv.outerStride(), uLow, uHigh, vLow, vHigh);
+  for (Eigen::Index i = 0; !inside && i < n; ++i) {
     const double u = uv(i, 0), v = uv(i, 1);
     if (!(std::isfinite(u) && std::isfinite(v))) throw InputError("uv point " + std::to_string(i) + " is not finite");
-    if (u < surface.u0 - 0.1 * wu || u > surface.u1 + 0.1 * wu || v < surface.v0 - 0.1 * wv ||
-        v > surface.v1 + 0.1 * wv) {
+    if (u < uLow || u > uHigh || v < vLow || v > vHigh) {
       throw InputError(pointName(i, u, v) + " is outside the face's parameter range u in [" + exactNumber(surface.u0) +
                        ", " + exactNumber(surface.u1) + "], v in [" + exactNumber(surface.v0) + ", " +
                        exactNumber(surface.v1) + "] by more than 10%");
     }
   }
   namespace column = curvature_column;
-  detail::Principal k;
-  // Each point's 16 values go straight into the caller's block, one column each.
-  const auto put = [&values](Eigen::Index i, int c, const gp_XYZ& x) {
-    values(i, c) = x.X();
-    values(i, c + 1) = x.Y();
-    values(i, c + 2) = x.Z();
-  };
   // OCCT throws where a surface cannot be evaluated (an offset surface past its validity).
   const auto guarded = [&uv](Eigen::Index i, auto&& evaluate) {
     try {
@@ -233,58 +249,112 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
                        e.GetMessageString() + ")");
     }
   };
-  // In batches: the frames of a few points, then their curvatures. Both are chains of square
-  // roots and divisions; the points of a batch are independent, and in these shorter loops the
-  // processor overlaps their chains (one point's whole evaluation is too long for it to reach
-  // the next point's).
-  constexpr Eigen::Index kBatch = 8;
-  detail::SurfaceFrame frames[kBatch];
-  bool regular[kBatch];
-  for (Eigen::Index i0 = 0; i0 < n; i0 += kBatch) {
-    const Eigen::Index m = std::min(kBatch, n - i0);
-    for (Eigen::Index j = 0; j < m; ++j) {
-      const Eigen::Index i = i0 + j;
-      regular[j] = guarded(i, [&] { return surface.frame(uv(i, 0), uv(i, 1), frames[j]); });
+  // The scalar path, for the points the batch leaves to it: a degenerate point's limit, and
+  // the refusals, each naming its point.
+  const auto scalar = [&](Eigen::Index i) {
+    const double u = uv(i, 0), v = uv(i, 1);
+    detail::SurfaceFrame f;
+    detail::Principal k;
+    if (guarded(i, [&] { return surface.frame(u, v, f); })) {
+      k = detail::principalCurvatures(f);
+    } else if (!guarded(i, [&] { return surface.curvature(u, v, f, k); })) {  // the limit at a degenerate point
+      throw InputError("the curvature is not defined at " + pointName(i, u, v) +
+                       ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
+                       "without bound towards it");
     }
-    for (Eigen::Index j = 0; j < m; ++j) {
-      const Eigen::Index i = i0 + j;
-      const double u = uv(i, 0), v = uv(i, 1);
-      detail::SurfaceFrame& f = frames[j];
-      if (regular[j]) {
-        k = detail::principalCurvatures(f);
-      } else if (!guarded(i, [&] { return surface.curvature(u, v, f, k); })) {  // the limit at a degenerate point
-        throw InputError("the curvature is not defined at " + pointName(i, u, v) +
-                         ": the surface is singular there (an apex or a collapsed edge) and the curvature grows "
-                         "without bound towards it");
-      }
-      const double K = k.k1 * k.k2;
-      if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(K))) {
-        throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
-      }
-      // Unit vectors: their sum is finite exactly when each coordinate is.
-      if (!std::isfinite(k.dir1.X() + k.dir1.Y() + k.dir1.Z() + f.n.X() + f.n.Y() + f.n.Z())) {
-        throw InputError("the principal directions or the normal at " + pointName(i, u, v) +
-                         " are not finite: the surface is too large, too small or too close to singular there for "
-                         "double precision");
-      }
-      values(i, column::k1) = k.k1;
-      values(i, column::k2) = k.k2;
-      values(i, column::gaussian) = K;
-      values(i, column::mean) = 0.5 * (k.k1 + k.k2);
-      put(i, column::dir1, k.dir1.XYZ());
-      put(i, column::dir2, k.dir2.XYZ());
-      put(i, column::normal, f.n.XYZ());
-      put(i, column::point, f.p.XYZ());
-      state[i] = static_cast<std::int8_t>(k.state);
+    const double K = k.k1 * k.k2;
+    if (!(std::isfinite(k.k1) && std::isfinite(k.k2) && std::isfinite(K))) {
+      throw InputError("the curvature at " + pointName(i, u, v) + " is beyond double precision");
     }
+    // Unit vectors: their sum is finite exactly when each coordinate is.
+    if (!std::isfinite(k.dir1.X() + k.dir1.Y() + k.dir1.Z() + f.n.X() + f.n.Y() + f.n.Z())) {
+      throw InputError("the principal directions or the normal at " + pointName(i, u, v) +
+                       " are not finite: the surface is too large, too small or too close to singular there for "
+                       "double precision");
+    }
+    const auto put = [&values, i](int c, const gp_XYZ& x) {
+      values(i, c) = x.X();
+      values(i, c + 1) = x.Y();
+      values(i, c + 2) = x.Z();
+    };
+    values(i, column::k1) = k.k1;
+    values(i, column::k2) = k.k2;
+    values(i, column::gaussian) = K;
+    values(i, column::mean) = 0.5 * (k.k1 + k.k2);
+    put(column::dir1, k.dir1.XYZ());
+    put(column::dir2, k.dir2.XYZ());
+    put(column::normal, f.n.XYZ());
+    put(column::point, f.p.XYZ());
+    state[i] = static_cast<std::int8_t>(k.state);
+  };
+  // A batch at a time (surface_curvature_batch.hpp): the derivatives of its points, their
+  // curvatures in one vectorised loop, written straight into the caller's columns.
+  const std::ptrdiff_t stride = uv.outerStride();
+  const auto evaluate = [&](Eigen::Index from, Eigen::Index to) {
+    const auto batch = std::make_unique<detail::CurvatureBatch>();
+    detail::CurvatureBatch& b = *batch;
+    for (Eigen::Index i0 = from; i0 < to; i0 += detail::CurvatureBatch::kSize) {
+      const int m = static_cast<int>(std::min<Eigen::Index>(detail::CurvatureBatch::kSize, to - i0));
+      try {
+        surface.jets(uv.data() + i0 * stride, stride, m, b);
+      } catch (const Standard_Failure& e) {
+        for (int j = 0; j < m; ++j) scalar(i0 + j);  // names the point that fails (the same evaluations)
+        throw InputError(std::string("the surface cannot be evaluated (") + e.GetMessageString() + ")");
+      }
+      const auto at = [&values, i0](int c) { return values.col(c).data() + i0; };
+      detail::CurvatureColumns out{
+          at(column::k1), at(column::k2), at(column::gaussian), at(column::mean), {}, {}, {}, {}};
+      for (int c = 0; c < 3; ++c) {
+        out.dir1[c] = at(column::dir1 + c);
+        out.dir2[c] = at(column::dir2 + c);
+        out.normal[c] = at(column::normal + c);
+        out.point[c] = at(column::point + c);
+      }
+      detail::curvaturesOfBatch(b, m, surface.sign, out);
+      for (int j = 0; j < m; ++j) {
+        if (b.verdict[j] == detail::CurvatureBatch::kScalar) {
+          scalar(i0 + j);
+        } else {
+          state[i0 + j] = static_cast<std::int8_t>(b.verdict[j]);
+        }
+      }
+    }
+  };
+  // Large calls on surfaces that threads may share (FaceSurface::threadSafe) are split into
+  // consecutive ranges, one a thread; each range writes only its own rows. A refusal names
+  // the first point that fails: the ranges' errors are rethrown in their order.
+  const Eigen::Index ranges =
+      surface.threadSafe() ? std::min<Eigen::Index>(threadCount(threads), n / kPointsPerThread) : 1;
+  if (ranges <= 1) {
+    evaluate(0, n);
+    return;
+  }
+  const auto start = [n, ranges](Eigen::Index r) {
+    return std::min(n, (n * r / ranges + detail::CurvatureBatch::kSize - 1) / detail::CurvatureBatch::kSize *
+                           detail::CurvatureBatch::kSize);
+  };
+  std::vector<std::exception_ptr> errors(ranges);
+  const auto guardedRange = [&](Eigen::Index r) {
+    try {
+      evaluate(start(r), start(r + 1));
+    } catch (...) {
+      errors[r] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> workers;
+  for (Eigen::Index r = 1; r < ranges; ++r) workers.emplace_back(guardedRange, r);
+  guardedRange(0);
+  for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
   }
 }
 
-SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv) {
+SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, int threads) {
   SurfaceCurvature out;
   out.values.resize(uv.rows(), Eigen::NoChange);
   out.state.resize(uv.rows());
-  surfaceCurvature(face, uv, out.values, out.state);
+  surfaceCurvature(face, uv, out.values, out.state, threads);
   return out;
 }
 

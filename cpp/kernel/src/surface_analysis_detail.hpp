@@ -4,12 +4,14 @@
 #pragma once
 #include <BRepAdaptor_Surface.hxx>
 #include <TopoDS_Face.hxx>
+#include <cstddef>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 #include <memory>
 #include <vector>
 
 #include "fairsplines/surface_analysis.hpp"
+#include "surface_curvature_batch.hpp"
 #include "surface_patches.hpp"
 
 namespace fairsplines::detail {
@@ -41,6 +43,12 @@ public:
   /// inside the face; false where that limit does not exist (curvature growing without
   /// bound towards the point: a cone's apex), with the values just inside the face.
   bool curvature(double u, double v, SurfaceFrame& f, Principal& k) const;
+  /// The points and derivatives at m parameters (the rows (u, v) of uv, `stride` doubles
+  /// apart) into the batch, each the same bits as frame's. May throw Standard_Failure.
+  void jets(const double* uv, std::ptrdiff_t stride, int m, CurvatureBatch& batch) const;
+  /// Whether threads may evaluate it at once: its own patches are read-only, where OCCT's
+  /// adaptor keeps a cache it rewrites.
+  bool threadSafe() const { return patches_ != nullptr; }
   double u0, u1, v0, v1;  ///< the face's parameter bounds (BRepTools::UVBounds)
   double sign;            ///< +1 for a forward face, -1 for a reversed one
 

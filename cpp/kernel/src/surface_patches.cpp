@@ -22,6 +22,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
+
+#include "vectorise.hpp"
 
 namespace fairsplines::detail {
 
@@ -41,19 +44,11 @@ Eigen::MatrixXd bernsteinToPower(int n) {
   return m;
 }
 
-/// The span of a sorted breakpoint list holding x: [0, spans - 1], the end spans beyond.
-/// It counts the inner breakpoints <= x by a binary search whose steps are selects, not
-/// branches: on scattered points a branch would be mispredicted at every other step.
+/// The span of a sorted breakpoint list holding x: [0, spans - 1], the end spans beyond
+/// (a binary search: Spans::build's table, and the buckets' few steps below).
 int spanOf(const std::vector<double>& breaks, double x) {
-  const double* const inner = breaks.data() + 1;
-  const double* b = inner;
-  std::size_t count = breaks.size() - 2;  // the answer lies in [b - inner, b - inner + count]
-  while (count > 1) {
-    const std::size_t half = count / 2;
-    b = b[half - 1] <= x ? b + half : b;
-    count -= half;
-  }
-  return static_cast<int>(b - inner) + (count == 1 && b[0] <= x ? 1 : 0);
+  const auto inner = std::upper_bound(breaks.begin() + 1, breaks.end() - 1, x);
+  return static_cast<int>(inner - (breaks.begin() + 1));
 }
 
 /// x moved by whole periods into [first, first + period), for a periodic direction.
@@ -63,35 +58,50 @@ double wrap(double x, double first, double period) {
   return first + (r < 0.0 ? r + period : r);
 }
 
-gp_Vec vec(const Eigen::Vector3d& x) { return gp_Vec(x.x(), x.y(), x.z()); }
+/// A homogeneous point or vector (w x, w y, w z, w): one AVX register where the processor
+/// has AVX (vectorise.hpp), two SSE2 registers elsewhere. Every operation acts on the four
+/// coordinates alike, as Eigen's Vector4d did.
+typedef double Homogeneous __attribute__((vector_size(32)));
 
 /// The homogeneous point A(s, t) and its first and second derivatives in s and t.
 struct HomogeneousD2 {
-  Eigen::Vector4d A, As, At, Ass, Ast, Att;
+  Homogeneous A, As, At, Ass, Ast, Att;
 };
 
-/// HomogeneousD2 of one span's (p + 1) x (q + 1) power coefficients a_kl at (s, t): Horner in s
-/// over the rows' values r_k(t), r_k'(t) and half r_k''(t), each by Horner in t
-/// (d2 = d2 t + d1, d1 = d1 t + x, x = x t + c). P, Q > 0: the degrees, known when compiling
-/// (the bicubic case: loops of fixed length, unrolled); 0: p and q as given.
+/// HomogeneousD2 of one span's (p + 1) x (q + 1) power coefficients a_kl (4 doubles each) at
+/// (s, t): Horner in s over the rows' values r_k(t), r_k'(t) and half r_k''(t), each by
+/// Horner in t (d2 = d2 t + d1, d1 = d1 t + x, x = x t + c), its first steps, whose
+/// accumulators are still 0, taken as the copies they amount to. P, Q > 0: the degrees, known
+/// when compiling (the bicubic case: loops of fixed length, unrolled, the steps' choices
+/// settled); 0: p and q as given.
 template <int P, int Q>
-HomogeneousD2 horner(const Eigen::Vector4d* a, int p, int q, double s, double t) {
+__attribute__((always_inline)) inline HomogeneousD2 horner(const double* a, int p, int q, double s, double t) {
   if constexpr (P > 0) p = P;
   if constexpr (Q > 0) q = Q;
-  HomogeneousD2 h;
-  h.A = h.As = h.Ass = h.At = h.Ast = h.Att = Eigen::Vector4d::Zero();
+  const Homogeneous zero = {0.0, 0.0, 0.0, 0.0};
+  HomogeneousD2 h{zero, zero, zero, zero, zero, zero};
   for (int k = p; k >= 0; --k) {
-    const Eigen::Vector4d* row = a + k * (q + 1);
-    Eigen::Vector4d r = row[q], r1 = Eigen::Vector4d::Zero(), r2 = Eigen::Vector4d::Zero();
+    const double* row = a + 4 * k * (q + 1);
+    Homogeneous r, r1 = zero, r2 = zero, a_kl;
+    std::memcpy(&r, row + 4 * q, sizeof r);
     for (int l = q - 1; l >= 0; --l) {
-      r2 = r2 * t + r1;
-      r1 = r1 * t + r;
-      r = r * t + row[l];
+      std::memcpy(&a_kl, row + 4 * l, sizeof a_kl);
+      if (l <= q - 3) r2 = r2 * t + r1;
+      if (l == q - 2) r2 = r1;
+      r1 = l <= q - 2 ? r1 * t + r : r;
+      r = r * t + a_kl;
     }
-    h.Ass = h.Ass * s + h.As;
-    h.As = h.As * s + h.A;
+    if (k == p) {
+      h.A = r;
+      h.At = r1;
+      h.Att = 2.0 * r2;
+      continue;
+    }
+    if (k <= p - 3) h.Ass = h.Ass * s + h.As;
+    if (k == p - 2) h.Ass = h.As;
+    h.As = k <= p - 2 ? h.As * s + h.A : h.A;
     h.A = h.A * s + r;
-    h.Ast = h.Ast * s + h.At;
+    h.Ast = k <= p - 2 ? h.Ast * s + h.At : h.At;
     h.At = h.At * s + r1;
     h.Att = h.Att * s + 2.0 * r2;
   }
@@ -99,7 +109,96 @@ HomogeneousD2 horner(const Eigen::Vector4d* a, int p, int q, double s, double t)
   return h;
 }
 
+/// S and its derivatives in u and v at one point, the first three coordinates of each
+/// (the fourth is left over from the homogeneous arithmetic).
+struct Jet {
+  Homogeneous S, Su, Sv, Suu, Svv, Suv;
+};
+
+/// The patches' arrays, for the loops below.
+struct PatchView {
+  int p, q;
+  const PowerPatches::Spans &u, &v;
+  const double* a;
+};
+
+/// The span holding x (spanOf's answer): its bucket's first candidate, then a step to the
+/// next span without a branch, then (where knots crowd a bucket) more.
+__attribute__((always_inline)) inline int spanAt(const PowerPatches::Spans& d, double x) {
+  const double f = (x - d.breaks[0]) * d.bucketsPerUnit;
+  const int last = static_cast<int>(d.lower.size()) - 1;
+  const int bucket = f > 0.0 ? (f < last ? static_cast<int>(f) : last) : 0;
+  int span = d.lower[bucket];
+  const int upper = d.upper[bucket];
+  span += (span < upper) & (d.breaks[span + 1] <= x);
+  while (span < upper && d.breaks[span + 1] <= x) ++span;
+  return span;
+}
+
+/// The jet at (u, v): the span's power form by Horner's rule, then the quotient rule, and
+/// d/du = (ds/du) d/ds. Inlined always, so that in jetsOf it is compiled for AVX too.
+__attribute__((always_inline)) inline Jet jetAt(const PatchView& w, double u, double v) {
+  u = wrap(u, w.u.first, w.u.period);
+  v = wrap(v, w.v.first, w.v.period);
+  const int i = spanAt(w.u, u), j = spanAt(w.v, v);
+  const double dsdu = w.u.scale[i], dtdv = w.v.scale[j];  // 1 / the span's widths: ds/du, dt/dv
+  const double s = (u - w.u.breaks[i]) * dsdu, t = (v - w.v.breaks[j]) * dtdv;
+  const int nv = static_cast<int>(w.v.breaks.size()) - 1;
+  const double* a = w.a + 4 * (static_cast<std::size_t>(i) * nv + j) * (w.p + 1) * (w.q + 1);
+  HomogeneousD2 h = w.p == 3 && w.q == 3 ? horner<3, 3>(a, 3, 3, s, t) : horner<0, 0>(a, w.p, w.q, s, t);
+  h.As *= dsdu;
+  h.Ass *= dsdu * dsdu;
+  h.At *= dtdv;
+  h.Att *= dtdv * dtdv;
+  h.Ast *= dsdu * dtdv;
+  const double wInverse = 1.0 / h.A[3];  // one division; the quotient rule multiplies by 1 / w
+  Jet x;
+  x.S = h.A * wInverse;
+  x.Su = (h.As - h.As[3] * x.S) * wInverse;
+  x.Sv = (h.At - h.At[3] * x.S) * wInverse;
+  x.Suu = (h.Ass - 2.0 * h.As[3] * x.Su - h.Ass[3] * x.S) * wInverse;
+  x.Svv = (h.Att - 2.0 * h.At[3] * x.Sv - h.Att[3] * x.S) * wInverse;
+  x.Suv = (h.Ast - h.As[3] * x.Sv - h.At[3] * x.Su - h.Ast[3] * x.S) * wInverse;
+  return x;
+}
+
+gp_Vec vec(const Homogeneous& x) { return gp_Vec(x[0], x[1], x[2]); }
+
+/// The jets of m points into the batch's arrays, compiled for AVX and for the baseline.
+FAIRSPLINES_VECTORISE void jetsOf(const PatchView& w, const double* uv, std::ptrdiff_t stride, int m,
+                                  CurvatureBatch& b) {
+  for (int i = 0; i < m; ++i) {
+    const Jet x = jetAt(w, uv[i * stride], uv[i * stride + 1]);
+    for (int c = 0; c < 3; ++c) {
+      b.p[c][i] = x.S[c];
+      b.su[c][i] = x.Su[c];
+      b.sv[c][i] = x.Sv[c];
+      b.suu[c][i] = x.Suu[c];
+      b.svv[c][i] = x.Svv[c];
+      b.suv[c][i] = x.Suv[c];
+    }
+  }
+}
+
 }  // namespace
+
+void PowerPatches::Spans::build() {
+  const int spans = static_cast<int>(breaks.size()) - 1;
+  scale.clear();
+  for (int i = 0; i < spans; ++i) scale.push_back(1.0 / (breaks[i + 1] - breaks[i]));
+  // 8 buckets a span (at most 2^16): with even knots a bucket's candidates, taken half a
+  // bucket wider each side (so that rounding of the bucket's index cannot leave the span
+  // outside them), hold one knot at most.
+  const int buckets = std::min(8 * spans, 1 << 16);
+  const double width = (breaks.back() - breaks.front()) / buckets;
+  bucketsPerUnit = 1.0 / width;
+  lower.resize(buckets);
+  upper.resize(buckets);
+  for (int b = 0; b < buckets; ++b) {
+    lower[b] = b == 0 ? 0 : spanOf(breaks, breaks.front() + (b - 0.5) * width);
+    upper[b] = b == buckets - 1 ? spans - 1 : spanOf(breaks, breaks.front() + (b + 1.5) * width);
+  }
+}
 
 std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
   Handle(Geom_Surface) surface = BRep_Tool::Surface(face);  // the face's location applied
@@ -120,10 +219,10 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
   out->q_ = bspline->VDegree();
   double u0, u1, v0, v1;
   bspline->Bounds(u0, u1, v0, v1);
-  out->uFirst_ = u0;
-  out->vFirst_ = v0;
-  out->uPeriod_ = bspline->IsUPeriodic() ? u1 - u0 : 0.0;
-  out->vPeriod_ = bspline->IsVPeriodic() ? v1 - v0 : 0.0;
+  out->u_.first = u0;
+  out->v_.first = v0;
+  out->u_.period = bspline->IsUPeriodic() ? u1 - u0 : 0.0;
+  out->v_.period = bspline->IsVPeriodic() ? v1 - v0 : 0.0;
   if (bspline->IsUPeriodic() || bspline->IsVPeriodic()) {  // the same surface over one period, clamped
     bspline = Handle(Geom_BSplineSurface)::DownCast(bspline->Copy());
     if (bspline->IsUPeriodic()) bspline->SetUNotPeriodic();
@@ -136,19 +235,19 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
   TColStd_Array1OfReal uKnots(1, nu + 1), vKnots(1, nv + 1);
   convert.UKnots(uKnots);
   convert.VKnots(vKnots);
-  for (int i = 1; i <= nu + 1; ++i) out->uBreaks_.push_back(uKnots(i));
-  for (int j = 1; j <= nv + 1; ++j) out->vBreaks_.push_back(vKnots(j));
-  for (int i = 0; i < nu; ++i) out->uScale_.push_back(1.0 / (out->uBreaks_[i + 1] - out->uBreaks_[i]));
-  for (int j = 0; j < nv; ++j) out->vScale_.push_back(1.0 / (out->vBreaks_[j + 1] - out->vBreaks_[j]));
+  for (int i = 1; i <= nu + 1; ++i) out->u_.breaks.push_back(uKnots(i));
+  for (int j = 1; j <= nv + 1; ++j) out->v_.breaks.push_back(vKnots(j));
+  out->u_.build();
+  out->v_.build();
 
   const int p = out->p_, q = out->q_;
   const Eigen::MatrixXd mu = bernsteinToPower(p), mv = bernsteinToPower(q);
-  out->a_.resize(static_cast<std::size_t>(nu) * nv * (p + 1) * (q + 1));
+  out->a_.resize(4 * static_cast<std::size_t>(nu) * nv * (p + 1) * (q + 1));
   Eigen::MatrixXd b(p + 1, q + 1);
   for (int i = 1; i <= nu; ++i) {
     for (int j = 1; j <= nv; ++j) {
       const Handle(Geom_BezierSurface)& patch = patches(i, j);
-      Eigen::Vector4d* a = &out->a_[((static_cast<std::size_t>(i) - 1) * nv + (j - 1)) * (p + 1) * (q + 1)];
+      double* a = &out->a_[4 * ((static_cast<std::size_t>(i) - 1) * nv + (j - 1)) * (p + 1) * (q + 1)];
       for (int c = 0; c < 4; ++c) {  // one homogeneous coordinate at a time: a = M^p b (M^q)^T
         for (int k = 0; k <= p; ++k) {
           for (int l = 0; l <= q; ++l) {
@@ -158,7 +257,7 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
         }
         const Eigen::MatrixXd power = mu * b * mv.transpose();
         for (int k = 0; k <= p; ++k) {
-          for (int l = 0; l <= q; ++l) a[k * (q + 1) + l][c] = power(k, l);
+          for (int l = 0; l <= q; ++l) a[4 * (k * (q + 1) + l) + c] = power(k, l);
         }
       }
     }
@@ -168,35 +267,17 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
 
 void PowerPatches::d2(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv, gp_Vec& suu, gp_Vec& svv,
                       gp_Vec& suv) const {
-  u = wrap(u, uFirst_, uPeriod_);
-  v = wrap(v, vFirst_, vPeriod_);
-  const int i = spanOf(uBreaks_, u), j = spanOf(vBreaks_, v);
-  const double dsdu = uScale_[i], dtdv = vScale_[j];  // 1 / the span's widths: ds/du, dt/dv
-  const double s = (u - uBreaks_[i]) * dsdu, t = (v - vBreaks_[j]) * dtdv;
-  const int nv = static_cast<int>(vBreaks_.size()) - 1;
-  const Eigen::Vector4d* a = &a_[(static_cast<std::size_t>(i) * nv + j) * (p_ + 1) * (q_ + 1)];
+  const Jet x = jetAt(PatchView{p_, q_, u_, v_, a_.data()}, u, v);
+  p.SetCoord(x.S[0], x.S[1], x.S[2]);
+  su = vec(x.Su);
+  sv = vec(x.Sv);
+  suu = vec(x.Suu);
+  svv = vec(x.Svv);
+  suv = vec(x.Suv);
+}
 
-  HomogeneousD2 h = p_ == 3 && q_ == 3 ? horner<3, 3>(a, p_, q_, s, t) : horner<0, 0>(a, p_, q_, s, t);
-  Eigen::Vector4d &A = h.A, &As = h.As, &At = h.At, &Ass = h.Ass, &Ast = h.Ast, &Att = h.Att;
-  // To (u, v): d/du = (ds/du) d/ds.
-  As *= dsdu;
-  Ass *= dsdu * dsdu;
-  At *= dtdv;
-  Att *= dtdv * dtdv;
-  Ast *= dsdu * dtdv;
-  const double wInverse = 1.0 / A[3];  // one division; the quotient rule multiplies by 1 / w
-  const Eigen::Vector3d S = A.head<3>() * wInverse;
-  const Eigen::Vector3d Su = (As.head<3>() - As[3] * S) * wInverse;
-  const Eigen::Vector3d Sv = (At.head<3>() - At[3] * S) * wInverse;
-  const Eigen::Vector3d Suu = (Ass.head<3>() - 2.0 * As[3] * Su - Ass[3] * S) * wInverse;
-  const Eigen::Vector3d Svv = (Att.head<3>() - 2.0 * At[3] * Sv - Att[3] * S) * wInverse;
-  const Eigen::Vector3d Suv = (Ast.head<3>() - As[3] * Sv - At[3] * Su - Ast[3] * S) * wInverse;
-  p.SetCoord(S.x(), S.y(), S.z());
-  su = vec(Su);
-  sv = vec(Sv);
-  suu = vec(Suu);
-  svv = vec(Svv);
-  suv = vec(Suv);
+void PowerPatches::jets(const double* uv, std::ptrdiff_t stride, int m, CurvatureBatch& batch) const {
+  jetsOf(PatchView{p_, q_, u_, v_, a_.data()}, uv, stride, m, batch);
 }
 
 }  // namespace fairsplines::detail

@@ -75,12 +75,15 @@ struct SurfaceCurvature {
 /// Throws InputError if uv is not n x 2, has a NaN or infinite entry, lies outside the
 /// face's parameter range by more than 10% of it, if the surface cannot be evaluated there
 /// or its curvature is infinite (each naming the point, from 0), if the face is null, or if
-/// values or state do not have uv.rows() rows (then nothing is written).
+/// values or state do not have uv.rows() rows (then nothing is written), or threads < 0.
+/// threads: at most this many threads share a large call (0: one a core, at most 8), on
+/// B-spline and Bezier faces, each thread taking 16384 points or more; the results do not
+/// depend on it.
 void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<CurvatureBlock> values,
-                      Eigen::Ref<PointStates> state);
+                      Eigen::Ref<PointStates> state, int threads = 0);
 
 /// The same into a SurfaceCurvature of its own.
-SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv);
+SurfaceCurvature surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, int threads = 0);
 
 /// Tolerances of the continuity verdict (docs/SURFACE_ANALYSIS.md).
 struct ContinuityOptions {
