@@ -94,7 +94,7 @@ __attribute__((always_inline)) inline HomogeneousD2 horner(const double* a, int 
     if (k == p) {
       h.A = r;
       h.At = r1;
-      h.Att = 2.0 * r2;
+      h.Att = r2;
       continue;
     }
     if (k <= p - 3) h.Ass = h.Ass * s + h.As;
@@ -103,9 +103,10 @@ __attribute__((always_inline)) inline HomogeneousD2 horner(const double* a, int 
     h.A = h.A * s + r;
     h.Ast = k <= p - 2 ? h.Ast * s + h.At : h.At;
     h.At = h.At * s + r1;
-    h.Att = h.Att * s + 2.0 * r2;
+    h.Att = h.Att * s + r2;
   }
   h.Ass *= 2.0;
+  h.Att *= 2.0;  // the half r_k'' summed, then doubled: the same bits as summing 2 r_k''
   return h;
 }
 
@@ -136,7 +137,9 @@ __attribute__((always_inline)) inline int spanAt(const PowerPatches::Spans& d, d
 }
 
 /// The jet at (u, v): the span's power form by Horner's rule, then the quotient rule, and
-/// d/du = (ds/du) d/ds. Inlined always, so that in jetsOf it is compiled for AVX too.
+/// d/du = (ds/du) d/ds. Inlined always, so that in jetsOf it is compiled for AVX too. P, Q:
+/// as horner's.
+template <int P = 0, int Q = 0>
 __attribute__((always_inline)) inline Jet jetAt(const PatchView& w, double u, double v) {
   u = wrap(u, w.u.first, w.u.period);
   v = wrap(v, w.v.first, w.v.period);
@@ -145,7 +148,7 @@ __attribute__((always_inline)) inline Jet jetAt(const PatchView& w, double u, do
   const double s = (u - w.u.breaks[i]) * dsdu, t = (v - w.v.breaks[j]) * dtdv;
   const int nv = static_cast<int>(w.v.breaks.size()) - 1;
   const double* a = w.a + 4 * (static_cast<std::size_t>(i) * nv + j) * (w.p + 1) * (w.q + 1);
-  HomogeneousD2 h = w.p == 3 && w.q == 3 ? horner<3, 3>(a, 3, 3, s, t) : horner<0, 0>(a, w.p, w.q, s, t);
+  HomogeneousD2 h = horner<P, Q>(a, w.p, w.q, s, t);
   h.As *= dsdu;
   h.Ass *= dsdu * dsdu;
   h.At *= dtdv;
@@ -167,8 +170,10 @@ gp_Vec vec(const Homogeneous& x) { return gp_Vec(x[0], x[1], x[2]); }
 /// The jets of m points into the batch's arrays, compiled for AVX and for the baseline.
 FAIRSPLINES_VECTORISE void jetsOf(const PatchView& w, const double* uv, std::ptrdiff_t stride, int m,
                                   CurvatureBatch& b) {
+  const bool bicubic = w.p == 3 && w.q == 3;
   for (int i = 0; i < m; ++i) {
-    const Jet x = jetAt(w, uv[i * stride], uv[i * stride + 1]);
+    const Jet x =
+        bicubic ? jetAt<3, 3>(w, uv[i * stride], uv[i * stride + 1]) : jetAt(w, uv[i * stride], uv[i * stride + 1]);
     for (int c = 0; c < 3; ++c) {
       b.p[c][i] = x.S[c];
       b.su[c][i] = x.Su[c];
@@ -267,7 +272,8 @@ std::unique_ptr<PowerPatches> PowerPatches::of(const TopoDS_Face& face) {
 
 void PowerPatches::d2(double u, double v, gp_Pnt& p, gp_Vec& su, gp_Vec& sv, gp_Vec& suu, gp_Vec& svv,
                       gp_Vec& suv) const {
-  const Jet x = jetAt(PatchView{p_, q_, u_, v_, a_.data()}, u, v);
+  const PatchView w{p_, q_, u_, v_, a_.data()};
+  const Jet x = p_ == 3 && q_ == 3 ? jetAt<3, 3>(w, u, v) : jetAt(w, u, v);
   p.SetCoord(x.S[0], x.S[1], x.S[2]);
   su = vec(x.Su);
   sv = vec(x.Sv);
