@@ -10,6 +10,7 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
 #include <GeomConvert.hxx>
 #include <GeomLProp_SLProps.hxx>
 #include <Geom_BSplineSurface.hxx>
@@ -27,6 +28,9 @@
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "fairsplines/errors.hpp"
 #include "fairsplines/surface_analysis.hpp"
@@ -73,6 +77,47 @@ Handle(Geom_BSplineSurface) wavySurface(bool rational) {
   mults(1) = mults(2) = 4;
   return rational ? new Geom_BSplineSurface(poles, weights, knots, knots, mults, mults, 3, 3)
                   : new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
+}
+
+/// A rational B-spline of degrees (3, 3) whose u knots crowd near 0 (many spans in one of the
+/// span table's buckets) and are even in v, moved by a location.
+TopoDS_Face crowdedKnotsFace() {
+  TColgp_Array2OfPnt poles(1, 9, 1, 5);
+  TColStd_Array2OfReal weights(1, 9, 1, 5);
+  for (int i = 1; i <= 9; ++i) {
+    for (int j = 1; j <= 5; ++j) {
+      poles(i, j) = gp_Pnt(i, 1.2 * j, 0.5 * std::sin(1.1 * i + 0.8 * j));
+      weights(i, j) = 1.0 + 0.25 * ((i + j) % 3);
+    }
+  }
+  TColStd_Array1OfReal uKnots(1, 7), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 7), vMults(1, 3);
+  const double u[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};  // 4 + 5 + 4 - 3 - 1 = 9 poles
+  for (int i = 1; i <= 7; ++i) uKnots(i) = u[i - 1], uMults(i) = (i == 1 || i == 7) ? 4 : 1;
+  vKnots(1) = 0.0, vKnots(2) = 0.5, vKnots(3) = 1.0;  // 4 + 1 + 4 - 3 - 1 = 5 poles
+  vMults(1) = 4, vMults(2) = 1, vMults(3) = 4;
+  gp_Trsf move;
+  move.SetRotation(gp_Ax1(gp_Pnt(0, 1, 0), gp_Dir(0, 1, 1)), 0.4);
+  return TopoDS::Face(
+      BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 3), 1e-7)
+          .Face()
+          .Moved(TopLoc_Location(move)));
+}
+
+/// n points spread over the face's parameter box: random, with every 7th on a u knot line and
+/// every 11th on a v one (the knots of crowdedKnotsFace; others land between).
+Eigen::MatrixXd scattered(const TopoDS_Face& face, Eigen::Index n, unsigned seed) {
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double uKnots[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};
+  Eigen::MatrixXd uv(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    uv(i, 0) = i % 7 == 0 ? u0 + (u1 - u0) * uKnots[i % 49 / 7] : u0 + (u1 - u0) * unit(random);
+    uv(i, 1) = i % 11 == 0 ? v0 + (v1 - v0) * 0.5 : v0 + (v1 - v0) * unit(random);
+  }
+  return uv;
 }
 
 }  // namespace
@@ -226,6 +271,95 @@ TEST(SurfaceAnalysis, PowerPatchesMatchOcctD2) {
   EXPECT_EQ(detail::PowerPatches::of(BRepBuilderAPI_MakeFace(new Geom_BezierSurface(high), 1e-7).Face()), nullptr);
 }
 
+// The span table (surface_patches.cpp, Spans) and the jets against OCCT's own D2, on and one
+// ulp either side of every knot, and halfway between: crowded knots (many spans a bucket:
+// the binary search among a bucket's candidates) on a C2 cubic and on a face of degrees (1, 2)
+// that is C0 at its u knots (its derivative in u jumps there, so a span one off shows; its
+// knot 0.51 lies in the first half of its bucket, where the bucket's first candidate matters). Both the single-point path (d2) and the batch's points
+// and normals (surfaceCurvature, against OCCT's D1).
+TEST(SurfaceAnalysis, PowerPatchesMatchOcctD2OnEveryKnot) {
+  TColgp_Array2OfPnt poles(1, 6, 1, 4);
+  for (int i = 1; i <= 6; ++i)
+    for (int j = 1; j <= 4; ++j) poles(i, j) = gp_Pnt(i + 0.1 * j, j, 0.3 * std::cos(0.9 * i + 1.3 * j));
+  TColStd_Array1OfReal uKnots(1, 6), vKnots(1, 3);
+  TColStd_Array1OfInteger uMults(1, 6), vMults(1, 3);
+  const double linearKnots[] = {0.0, 1e-3, 2e-3, 3e-3, 0.51, 1.0};  // degree 1: 2 + 4 + 2 - 1 - 1 = 6 poles
+  for (int i = 1; i <= 6; ++i) uKnots(i) = linearKnots[i - 1], uMults(i) = (i == 1 || i == 6) ? 2 : 1;
+  vKnots(1) = -2.0, vKnots(2) = 1.0, vKnots(3) = 2.5;  // degree 2: 3 + 1 + 3 - 2 - 1 = 4 poles
+  vMults(1) = 3, vMults(2) = 1, vMults(3) = 3;
+  const TopoDS_Face linear =
+      BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, uKnots, vKnots, uMults, vMults, 1, 2), 1e-7).Face();
+  const std::vector<double> crowdedU = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0}, crowdedV = {0.0, 0.5, 1.0};
+  const std::vector<double> linearU(std::begin(linearKnots), std::end(linearKnots)), linearV = {-2.0, 1.0, 2.5};
+  int checked = 0;
+  // The power form about a span's corner loses about log10(1 / h^k) digits in the k-th
+  // derivative on a span of width h (here 1e-4 in the crowded cubic's u, a C2 face: a span
+  // taken one off changes its values only at rounding there, so it is judged to these widths);
+  // the linear face's derivative in u jumps at every knot, so a wrong span shows at 1e-11.
+  for (const auto& [face, us, vs, h] : {std::make_tuple(crowdedKnotsFace(), crowdedU, crowdedV, 1e-4),
+                                        std::make_tuple(linear, linearU, linearV, 1.0)}) {
+    const std::unique_ptr<detail::PowerPatches> patches = detail::PowerPatches::of(face);
+    ASSERT_NE(patches, nullptr);
+    // The referee: OCCT's LocalD2 on the span a plain scan names (the last knot <= x, the last
+    // span past the end). OCCT's D2 would snap a parameter within its tolerance of a knot to
+    // the knot, and take the other side of a knot where the surface is not C2.
+    const auto surface = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(face));  // location applied
+    ASSERT_FALSE(surface.IsNull());
+    const auto spanOf = [](const std::vector<double>& knots, double x) {
+      int span = 0;
+      for (std::size_t k = 1; k + 1 < knots.size(); ++k) span += knots[k] <= x;
+      return span + 1;  // OCCT counts knots from 1
+    };
+    std::vector<double> u, v;  // each knot, one ulp either side, and midpoints
+    for (const auto& [knots, out] : {std::make_pair(us, &u), std::make_pair(vs, &v)}) {
+      for (std::size_t k = 0; k < knots.size(); ++k) {
+        out->push_back(knots[k]);
+        if (k > 0) out->push_back(std::nextafter(knots[k], -1e300));
+        if (k + 1 < knots.size()) {
+          out->push_back(std::nextafter(knots[k], 1e300));
+          out->push_back(0.5 * (knots[k] + knots[k + 1]));
+        }
+      }
+    }
+    Eigen::MatrixXd uv(u.size() * v.size(), 2);
+    Eigen::Index row = 0;
+    std::vector<gp_Pnt> points;
+    std::vector<gp_Vec> normals;
+    for (double x : u) {
+      for (double y : v) {
+        gp_Pnt p, q;
+        gp_Vec d[5], e[5];
+        patches->d2(x, y, p, d[0], d[1], d[2], d[3], d[4]);
+        const int i = spanOf(us, x), j = spanOf(vs, y);
+        surface->LocalD2(x, y, i, i + 1, j, j + 1, q, e[0], e[1], e[2], e[3], e[4]);
+        double scale = gp_Vec(q.XYZ()).Magnitude() + 1.0;
+        for (const gp_Vec& w : e) scale = std::max(scale, w.Magnitude());
+        ASSERT_LT(p.Distance(q), 1e-12 * scale) << x << " " << y;
+        for (int k = 0; k < 5; ++k) {
+          const double order = k < 2 ? 1 : 2;  // Su, Sv; Suu, Svv, Suv
+          ASSERT_LT((d[k] - e[k]).Magnitude(), 1e-11 * scale / std::pow(h, order)) << k << " at " << x << ", " << y;
+        }
+        uv(row, 0) = x;
+        uv(row++, 1) = y;
+        points.push_back(q);
+        normals.push_back(e[0].Crossed(e[1]).Normalized() * (face.Orientation() == TopAbs_REVERSED ? -1.0 : 1.0));
+        ++checked;
+      }
+    }
+    // The batch: its points and normals on the same spans.
+    const SurfaceCurvature c = surfaceCurvature(face, uv, 1);
+    for (Eigen::Index i = 0; i < uv.rows(); ++i) {
+      const gp_Pnt& q = points[i];
+      const gp_Vec& n = normals[i];
+      EXPECT_LT((c.points().row(i) - Eigen::RowVector3d(q.X(), q.Y(), q.Z())).norm(),
+                1e-12 * (1.0 + gp_Vec(q.XYZ()).Magnitude()))
+          << i;
+      EXPECT_LT((c.normal().row(i) - Eigen::RowVector3d(n.X(), n.Y(), n.Z())).norm(), 1e-12 / h) << i;
+    }
+  }
+  EXPECT_EQ(checked, (7 + 6 + 6 + 6) * (3 + 2 + 2 + 2) + (6 + 5 + 5 + 5) * (3 + 2 + 2 + 2));
+}
+
 TEST(SurfaceAnalysis, BadUvIsRefused) {
   const TopoDS_Face face = firstFace(BRepPrimAPI_MakeBox(1, 2, 3).Shape());
   Eigen::MatrixXd nan(1, 2);
@@ -270,51 +404,6 @@ TEST(SurfaceAnalysis, CurvatureMapOfASphereIsConstant) {
 }
 
 // ---- the batch, the threads and the scalar path (surface_curvature_batch.cpp)
-
-namespace {
-
-/// A rational B-spline of degrees (3, 3) whose u knots crowd near 0 (many spans in one of the
-/// span table's buckets) and are even in v, moved by a location.
-TopoDS_Face crowdedKnotsFace() {
-  TColgp_Array2OfPnt poles(1, 9, 1, 5);
-  TColStd_Array2OfReal weights(1, 9, 1, 5);
-  for (int i = 1; i <= 9; ++i) {
-    for (int j = 1; j <= 5; ++j) {
-      poles(i, j) = gp_Pnt(i, 1.2 * j, 0.5 * std::sin(1.1 * i + 0.8 * j));
-      weights(i, j) = 1.0 + 0.25 * ((i + j) % 3);
-    }
-  }
-  TColStd_Array1OfReal uKnots(1, 7), vKnots(1, 3);
-  TColStd_Array1OfInteger uMults(1, 7), vMults(1, 3);
-  const double u[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};  // 4 + 5 + 4 - 3 - 1 = 9 poles
-  for (int i = 1; i <= 7; ++i) uKnots(i) = u[i - 1], uMults(i) = (i == 1 || i == 7) ? 4 : 1;
-  vKnots(1) = 0.0, vKnots(2) = 0.5, vKnots(3) = 1.0;  // 4 + 1 + 4 - 3 - 1 = 5 poles
-  vMults(1) = 4, vMults(2) = 1, vMults(3) = 4;
-  gp_Trsf move;
-  move.SetRotation(gp_Ax1(gp_Pnt(0, 1, 0), gp_Dir(0, 1, 1)), 0.4);
-  return TopoDS::Face(
-      BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, weights, uKnots, vKnots, uMults, vMults, 3, 3), 1e-7)
-          .Face()
-          .Moved(TopLoc_Location(move)));
-}
-
-/// n points spread over the face's parameter box: random, with every 7th on a u knot line and
-/// every 11th on a v one (the knots of crowdedKnotsFace; others land between).
-Eigen::MatrixXd scattered(const TopoDS_Face& face, Eigen::Index n, unsigned seed) {
-  double u0, u1, v0, v1;
-  BRepTools::UVBounds(face, u0, u1, v0, v1);
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double uKnots[] = {0.0, 1e-4, 2e-4, 3e-4, 4e-4, 0.6, 1.0};
-  Eigen::MatrixXd uv(n, 2);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    uv(i, 0) = i % 7 == 0 ? u0 + (u1 - u0) * uKnots[i % 49 / 7] : u0 + (u1 - u0) * unit(random);
-    uv(i, 1) = i % 11 == 0 ? v0 + (v1 - v0) * 0.5 : v0 + (v1 - v0) * unit(random);
-  }
-  return uv;
-}
-
-}  // namespace
 
 // The batch's vectorised loop and jets against the scalar path (FaceSurface::frame and
 // principalCurvatures, one point at a time): the same bits, at every point, on B-spline faces

@@ -285,13 +285,13 @@ def test_results_are_views_of_one_block_and_match_occt(reverse):
 
 
 def test_threads_give_the_same_bits_and_bad_counts_are_refused():
-    """A call of 40,000 points (past 32,768, where threads share it) gives the same bits with
-    one thread, three and the default; spot checks against Face.curvatureAt in the last
-    thread's range. A bad thread count is refused by name."""
+    """A call of 50,000 points (3 ranges of 16,384 points or more: threads share it past
+    32,768) gives the same bits with one thread, three and the default; spot checks against
+    Face.curvatureAt in the last range. A bad thread count is refused by name."""
     face = _multi_span_face()
     u0, u1, v0, v1 = face.ParameterRange
     rng = np.random.default_rng(11)
-    n = 40000
+    n = 50000
     uv = np.c_[rng.uniform(u0, u1, n), rng.uniform(v0, v1, n)]
     one = fw.surface_curvature(face, uv, threads=1)
     for threads in (None, 3):

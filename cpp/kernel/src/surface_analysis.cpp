@@ -223,6 +223,11 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
     throw InputError("the results need " + std::to_string(n) + " rows, one per uv point, got " +
                      std::to_string(values.rows()) + " and " + std::to_string(state.rows()));
   }
+  // The columns are written through pointers that alias nothing (surface_curvature_batch.hpp).
+  if (values.outerStride() < n) {
+    throw InputError("the results' columns overlap: their stride " + std::to_string(values.outerStride()) +
+                     " is less than their " + std::to_string(n) + " rows");
+  }
   const detail::FaceSurface surface(face);
   const double wu = surface.u1 - surface.u0, wv = surface.v1 - surface.v0;
   if (!(std::isfinite(wu) && std::isfinite(wv))) throw InputError("the face is unbounded: trim it first");
@@ -341,9 +346,17 @@ void surfaceCurvature(const TopoDS_Face& face, const PointsRef& uv, Eigen::Ref<C
       errors[r] = std::current_exception();
     }
   };
+  // Where a thread cannot start (a limit on threads, no memory), this one takes its range:
+  // the threads started are joined whatever happens.
   std::vector<std::thread> workers;
-  for (Eigen::Index r = 1; r < ranges; ++r) workers.emplace_back(guardedRange, r);
+  workers.reserve(ranges - 1);
+  Eigen::Index started = 1;
+  try {
+    for (; started < ranges; ++started) workers.emplace_back(guardedRange, started);
+  } catch (const std::exception&) {
+  }
   guardedRange(0);
+  for (Eigen::Index r = started; r < ranges; ++r) guardedRange(r);
   for (std::thread& w : workers) w.join();
   for (const std::exception_ptr& e : errors) {
     if (e) std::rethrow_exception(e);

@@ -65,7 +65,8 @@ FAIRSPLINES_VECTORISE bool inside(const double* __restrict uv, std::ptrdiff_t n,
   int all = 1;
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const double u = uv[i * stride], v = uv[i * stride + 1];
-    all &= (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1);
+    // Finite too (the bounds may be infinite on a face near the largest double).
+    all &= (u >= u0) & (u <= u1) & (v >= v0) & (v <= v1) & finite(u) & finite(v);
   }
   return all != 0;
 }

@@ -124,7 +124,8 @@ struct PatchView {
 };
 
 /// The span holding x (spanOf's answer): its bucket's first candidate, then a step to the
-/// next span without a branch, then (where knots crowd a bucket) more.
+/// next span without a branch, then (where knots crowd a bucket) a binary search among the
+/// bucket's candidates.
 __attribute__((always_inline)) inline int spanAt(const PowerPatches::Spans& d, double x) {
   const double f = (x - d.breaks[0]) * d.bucketsPerUnit;
   const int last = static_cast<int>(d.lower.size()) - 1;
@@ -132,7 +133,10 @@ __attribute__((always_inline)) inline int spanAt(const PowerPatches::Spans& d, d
   int span = d.lower[bucket];
   const int upper = d.upper[bucket];
   span += (span < upper) & (d.breaks[span + 1] <= x);
-  while (span < upper && d.breaks[span + 1] <= x) ++span;
+  if (span < upper && d.breaks[span + 1] <= x) {  // the last candidate with breaks[span] <= x
+    const auto first = d.breaks.begin() + span + 2, last = d.breaks.begin() + upper + 1;
+    span = static_cast<int>(std::upper_bound(first, last, x) - d.breaks.begin()) - 1;
+  }
   return span;
 }
 

@@ -75,7 +75,8 @@ struct SurfaceCurvature {
 /// Throws InputError if uv is not n x 2, has a NaN or infinite entry, lies outside the
 /// face's parameter range by more than 10% of it, if the surface cannot be evaluated there
 /// or its curvature is infinite (each naming the point, from 0), if the face is null, or if
-/// values or state do not have uv.rows() rows (then nothing is written), or threads < 0.
+/// values or state do not have uv.rows() rows or values' columns overlap (outer stride below
+/// uv.rows()) (then nothing is written), or threads < 0.
 /// threads: at most this many threads share a large call (0: one a core, at most 8), on
 /// B-spline and Bezier faces, each thread taking 16384 points or more; the results do not
 /// depend on it.
