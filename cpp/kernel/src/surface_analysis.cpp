@@ -167,7 +167,7 @@ Principal principalCurvatures(const SurfaceFrame& f) {
   forms.L = f.L;
   forms.M = f.M;
   forms.N = f.N;
-  forms.length = 1.0;  // regular
+  forms.length = 1.0;  // (regular: the frame was; principal does not read them)
   forms.size = 0.0;
   const lanes::Curvatures c = lanes::principal(forms, vec3(f.su), vec3(f.sv));
   Principal k;
