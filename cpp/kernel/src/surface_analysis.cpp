@@ -159,7 +159,7 @@ bool FaceSurface::curvature(double u, double v, SurfaceFrame& f, Principal& k) c
 // ---- principal curvatures (do Carmo §3-3)
 
 Principal principalCurvatures(const SurfaceFrame& f) {
-  lanes::Forms forms;
+  lanes::Forms forms{};  // (length and size, the regularity test, stay 0: principal reads neither)
   forms.n = vec3(f.n);
   forms.E = f.E;
   forms.F = f.F;
@@ -167,8 +167,6 @@ Principal principalCurvatures(const SurfaceFrame& f) {
   forms.L = f.L;
   forms.M = f.M;
   forms.N = f.N;
-  forms.length = 1.0;  // (regular: the frame was; principal does not read them)
-  forms.size = 0.0;
   const lanes::Curvatures c = lanes::principal(forms, vec3(f.su), vec3(f.sv));
   Principal k;
   k.k1 = c.k1;
